@@ -1,0 +1,180 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "dictionaryChecks.H"
+
+// * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- "a | b | c"
+    Foam::string alternatives(const Foam::wordList& words)
+    {
+        Foam::string s;
+        for (const Foam::word& w : words)
+        {
+            s += (s.empty() ? "" : " | ") + w;
+        }
+        return s;
+    }
+
+    Foam::string inUnit(const char* what, const Foam::word& unit)
+    {
+        Foam::string s(what);
+        if (!unit.empty() && unit != "-")
+        {
+            s += " [" + unit + "]";
+        }
+        return s;
+    }
+}
+
+
+Foam::scalar Foam::rbd::getPositive
+(
+    const dictionary& dict,
+    const word& key,
+    const word& unit
+)
+{
+    const scalar value = dict.get<scalar>(key);
+    if (!(value > 0))
+    {
+        badEntry(dict, key, value, inUnit("a number > 0", unit));
+    }
+    return value;
+}
+
+
+Foam::scalar Foam::rbd::getPositiveOrDefault
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar deflt,
+    const word& unit
+)
+{
+    const scalar value = dict.getOrDefault<scalar>(key, deflt);
+    if (!(value > 0))
+    {
+        badEntry(dict, key, value, inUnit("a number > 0", unit));
+    }
+    return value;
+}
+
+
+Foam::scalar Foam::rbd::getNonNegativeOrDefault
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar deflt,
+    const word& unit
+)
+{
+    const scalar value = dict.getOrDefault<scalar>(key, deflt);
+    if (!(value >= 0))
+    {
+        badEntry(dict, key, value, inUnit("a number >= 0", unit));
+    }
+    return value;
+}
+
+
+Foam::scalar Foam::rbd::getInRangeOrDefault
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar deflt,
+    const scalar lo,
+    const scalar hi,
+    const word& unit
+)
+{
+    const scalar value = dict.getOrDefault<scalar>(key, deflt);
+    if (!(value >= lo && value <= hi))
+    {
+        badEntry
+        (
+            dict, key, value,
+            inUnit("a number in", unit)
+          + " [" + Foam::name(lo) + ", " + Foam::name(hi) + "]"
+        );
+    }
+    return value;
+}
+
+
+Foam::label Foam::rbd::getPositiveLabel
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const label value = dict.get<label>(key);
+    if (value <= 0)
+    {
+        badEntry(dict, key, value, "a whole number > 0");
+    }
+    return value;
+}
+
+
+Foam::label Foam::rbd::getLabelOrDefault
+(
+    const dictionary& dict,
+    const word& key,
+    const label deflt,
+    const label lo
+)
+{
+    const label value = dict.getOrDefault<label>(key, deflt);
+    if (value < lo)
+    {
+        badEntry
+        (
+            dict, key, value, "a whole number >= " + Foam::name(lo)
+        );
+    }
+    return value;
+}
+
+
+Foam::word Foam::rbd::getChoiceOrDefault
+(
+    const dictionary& dict,
+    const word& key,
+    const word& deflt,
+    const wordList& allowed
+)
+{
+    const word value = dict.getOrDefault<word>(key, deflt);
+    if (!allowed.found(value))
+    {
+        badEntry(dict, key, value, "one of " + alternatives(allowed));
+    }
+    return value;
+}
+
+
+void Foam::rbd::checkKnownEntries
+(
+    const dictionary& dict,
+    const wordList& known
+)
+{
+    for (const entry& e : dict)
+    {
+        const word& key = e.keyword();
+        if (!known.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << key << "' in " << dict.name() << nl
+                << "    allowed: " << alternatives(known).c_str() << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+// ************************************************************************* //
