@@ -1,0 +1,160 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "neighbourList.H"
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    // 21 bits per direction, offset so that negative cells pack too
+    constexpr std::int64_t cellBits = 21;
+    constexpr std::int64_t cellOffset = std::int64_t(1) << (cellBits - 1);
+
+    inline std::int64_t cellKey(std::int64_t i, std::int64_t j, std::int64_t k)
+    {
+        return
+            ((i + cellOffset) << (2*cellBits))
+          | ((j + cellOffset) << cellBits)
+          | (k + cellOffset);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::neighbourList::neighbourList(const scalar skin)
+:
+    skin_(skin),
+    pairs_(),
+    x0_(),
+    cutoff0_(-1),
+    nBuilds_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::rbd::neighbourList::update
+(
+    const UList<point>& x,
+    const scalar cutoff
+)
+{
+    bool rebuild = (x.size() != x0_.size()) || (cutoff != cutoff0_);
+
+    if (!rebuild)
+    {
+        const scalar limit2 = sqr(0.5*skin_);
+        forAll(x, i)
+        {
+            if (magSqr(x[i] - x0_[i]) > limit2)
+            {
+                rebuild = true;
+                break;
+            }
+        }
+    }
+
+    if (rebuild)
+    {
+        gridPairs(x, cutoff + skin_, pairs_);
+        x0_ = x;
+        cutoff0_ = cutoff;
+        ++nBuilds_;
+    }
+
+    return rebuild;
+}
+
+
+void Foam::rbd::neighbourList::gridPairs
+(
+    const UList<point>& x,
+    const scalar cutoff,
+    DynamicList<labelPair>& pairs
+)
+{
+    pairs.clear();
+
+    const label n = x.size();
+    if (n < 2)
+    {
+        return;
+    }
+
+    const scalar cell = cutoff;
+    const scalar cutoff2 = sqr(cutoff);
+
+    std::vector<std::int64_t> ci(n), cj(n), ck(n);
+    std::vector<std::pair<std::int64_t, label>> keys(n);
+
+    for (label b = 0; b < n; ++b)
+    {
+        ci[b] = std::int64_t(std::floor(x[b].x()/cell));
+        cj[b] = std::int64_t(std::floor(x[b].y()/cell));
+        ck[b] = std::int64_t(std::floor(x[b].z()/cell));
+        keys[b] = {cellKey(ci[b], cj[b], ck[b]), b};
+    }
+    std::sort(keys.begin(), keys.end());
+
+    for (label b = 0; b < n; ++b)
+    {
+        for (int di = -1; di <= 1; ++di)
+        {
+            for (int dj = -1; dj <= 1; ++dj)
+            {
+                for (int dk = -1; dk <= 1; ++dk)
+                {
+                    const std::int64_t key =
+                        cellKey(ci[b] + di, cj[b] + dj, ck[b] + dk);
+
+                    auto it = std::lower_bound
+                    (
+                        keys.begin(), keys.end(),
+                        std::make_pair(key, label(-1))
+                    );
+
+                    for (; it != keys.end() && it->first == key; ++it)
+                    {
+                        const label o = it->second;
+                        if (o > b && magSqr(x[o] - x[b]) < cutoff2)
+                        {
+                            pairs.append(labelPair(b, o));
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::rbd::neighbourList::bruteForce
+(
+    const UList<point>& x,
+    const scalar cutoff,
+    DynamicList<labelPair>& pairs
+)
+{
+    pairs.clear();
+    const scalar cutoff2 = sqr(cutoff);
+
+    forAll(x, i)
+    {
+        for (label k = i + 1; k < x.size(); ++k)
+        {
+            if (magSqr(x[k] - x[i]) < cutoff2)
+            {
+                pairs.append(labelPair(i, k));
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //

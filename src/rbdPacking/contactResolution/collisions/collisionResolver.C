@@ -1,0 +1,167 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "collisionResolver.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::collisionResolver::collisionResolver
+(
+    const scalar epsP,
+    const scalar epsF,
+    const label restitutionSweeps,
+    const label maxSweeps
+)
+:
+    epsP_(epsP),
+    epsF_(epsF),
+    restitutionSweeps_(restitutionSweeps),
+    maxSweeps_(maxSweeps)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::vector Foam::rbd::collisionResolver::relativeVelocity
+(
+    const contact& c,
+    const UList<rigidBody>& bodies,
+    const boolList& fixed
+)
+{
+    vector vRel(bodies[c.i].pointVelocity(c.p));
+    if (c.k >= 0 && !fixed[c.k])
+    {
+        vRel -= bodies[c.k].pointVelocity(c.p);
+    }
+    return vRel;
+}
+
+
+Foam::scalar Foam::rbd::collisionResolver::effectiveInvMass
+(
+    const contact& c,
+    const vector& d,
+    const UList<rigidBody>& bodies,
+    const boolList& fixed
+)
+{
+    const rigidBody& bi = bodies[c.i];
+    const vector ri(c.p - bi.x());
+    scalar K = bi.invMass() + (d & (bi.applyInvInertia(ri ^ d) ^ ri));
+
+    if (c.k >= 0 && !fixed[c.k])
+    {
+        const rigidBody& bk = bodies[c.k];
+        const vector rk(c.p - bk.x());
+        K += bk.invMass() + (d & (bk.applyInvInertia(rk ^ d) ^ rk));
+    }
+    return K;
+}
+
+
+void Foam::rbd::collisionResolver::applyImpulse
+(
+    const contact& c,
+    const vector& J,
+    UList<rigidBody>& bodies,
+    const boolList& fixed
+)
+{
+    bodies[c.i].applyImpulse(J, c.p);
+    if (c.k >= 0 && !fixed[c.k])
+    {
+        bodies[c.k].applyImpulse(-J, c.p);
+    }
+}
+
+
+Foam::rbd::collisionResolver::result
+Foam::rbd::collisionResolver::resolve
+(
+    UList<rigidBody>& bodies,
+    const UList<contact>& contacts,
+    const scalar touchGap,
+    const boolList& fixed,
+    boolList& woken
+) const
+{
+    result res;
+
+    for (label sweep = 0; sweep < maxSweeps_; ++sweep)
+    {
+        const bool withRestitution = sweep < restitutionSweeps_;
+        bool applied = false;
+        res.residual = 0;
+
+        for (const contact& c : contacts)
+        {
+            if (c.gap > touchGap || fixed[c.i])
+            {
+                continue;
+            }
+
+            const vector vRel(relativeVelocity(c, bodies, fixed));
+            const scalar vn = vRel & c.n;
+
+            if (vn >= 0)
+            {
+                continue;
+            }
+
+            // Section 4: colliding or resting-but-approaching
+            const bool colliding = vn < -epsP_;
+            const scalar e = (colliding && withRestitution) ? c.e : 0;
+
+            if (colliding && c.k >= 0 && fixed[c.k])
+            {
+                // A real collision with a sleeping body wakes it; the
+                // impulse is applied once it takes part again
+                woken[c.k] = true;
+            }
+
+            res.residual = max(res.residual, -vn);
+
+            // Normal impulse (eqs 21-23)
+            const scalar jn =
+                -(1 + e)*vn/effectiveInvMass(c, c.n, bodies, fixed);
+            applyImpulse(c, jn*c.n, bodies, fixed);
+
+            // Friction impulse (eq 24), clamped so it cannot reverse slip
+            if (c.mu > 0)
+            {
+                const vector vRel1(relativeVelocity(c, bodies, fixed));
+                const vector vt(vRel1 - (vRel1 & c.n)*c.n);
+                const scalar slip = mag(vt);
+
+                if (slip > epsF_)
+                {
+                    const vector t(-vt/slip);
+                    const scalar jStick =
+                        slip/effectiveInvMass(c, t, bodies, fixed);
+                    applyImpulse(c, min(c.mu*jn, jStick)*t, bodies, fixed);
+                }
+            }
+
+            applied = true;
+            ++res.impulses;
+            if (colliding)
+            {
+                ++res.collisions;
+            }
+        }
+
+        res.sweeps = sweep + 1;
+        if (!applied)
+        {
+            res.residual = 0;
+            break;
+        }
+    }
+
+    return res;
+}
+
+
+// ************************************************************************* //

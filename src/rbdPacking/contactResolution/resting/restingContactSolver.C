@@ -1,0 +1,364 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "restingContactSolver.H"
+#include "collisionResolver.H"
+#include <Eigen/Dense>
+#include <numeric>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+    using namespace Foam::rbd;
+
+    //- Union-find root with path halving
+    label findRoot(std::vector<label>& parent, label a)
+    {
+        while (parent[a] != a)
+        {
+            parent[a] = parent[parent[a]];
+            a = parent[a];
+        }
+        return a;
+    }
+
+    //- Acceleration of the material point at p of body b under force F and
+    //  torque tau (eq 29)
+    vector pointAcceleration
+    (
+        const rigidBody& b,
+        const vector& F,
+        const vector& tau,
+        const point& p
+    )
+    {
+        const vector r(p - b.x());
+        const vector& w = b.omega();
+        const vector wDot(b.applyInvInertia(tau - (w ^ b.L())));
+        return b.invMass()*F + (wDot ^ r) + (w ^ (w ^ r));
+    }
+
+    //- Relative acceleration of i against k at the contact point
+    vector relativeAcceleration
+    (
+        const contact& c,
+        const UList<rigidBody>& bodies,
+        const boolList& fixed,
+        const UList<vector>& F,
+        const UList<vector>& tau
+    )
+    {
+        vector a(pointAcceleration(bodies[c.i], F[c.i], tau[c.i], c.p));
+        if (c.k >= 0 && !fixed[c.k])
+        {
+            a -= pointAcceleration(bodies[c.k], F[c.k], tau[c.k], c.p);
+        }
+        return a;
+    }
+
+    //- Apply force f at the contact: +f to i, -f to k
+    void applyForce
+    (
+        const contact& c,
+        const vector& f,
+        const UList<rigidBody>& bodies,
+        const boolList& fixed,
+        UList<vector>& F,
+        UList<vector>& tau
+    )
+    {
+        F[c.i] += f;
+        tau[c.i] += ((c.p - bodies[c.i].x()) ^ f);
+        if (c.k >= 0 && !fixed[c.k])
+        {
+            F[c.k] -= f;
+            tau[c.k] -= ((c.p - bodies[c.k].x()) ^ f);
+        }
+    }
+
+    //- One island's Jacobian rows: per contact and side, J = [lin, ang]
+    //  and W = M^-1 J^T
+    struct row
+    {
+        vector lin, ang, wLin, wAng;
+    };
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::restingContactSolver::restingContactSolver(const dictionary& dict)
+:
+    solver_(lcpSolver::New(dict))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::rbd::restingContactSolver::result
+Foam::rbd::restingContactSolver::solve
+(
+    const UList<rigidBody>& bodies,
+    const UList<contact>& contacts,
+    const labelUList& resting,
+    const boolList& fixed,
+    const scalar h,
+    UList<vector>& F,
+    UList<vector>& tau
+) const
+{
+    result res;
+    res.contacts = resting.size();
+    if (resting.empty())
+    {
+        return res;
+    }
+
+    // Islands: contacts connected through bodies that move
+    std::vector<label> parent(bodies.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (const label ci : resting)
+    {
+        const contact& c = contacts[ci];
+        if (c.k >= 0 && !fixed[c.k])
+        {
+            parent[findRoot(parent, c.i)] = findRoot(parent, c.k);
+        }
+    }
+
+    std::vector<std::vector<label>> islandOf(bodies.size());
+    std::vector<label> roots;
+    for (const label ci : resting)
+    {
+        const label r = findRoot(parent, contacts[ci].i);
+        if (islandOf[r].empty())
+        {
+            roots.push_back(r);
+        }
+        islandOf[r].push_back(ci);
+    }
+    res.islands = roots.size();
+
+    bool anyFriction = false;
+    for (const label ci : resting)
+    {
+        anyFriction = anyFriction || contacts[ci].mu > 0;
+    }
+
+    // External forces (gravity) kept apart from contact forces
+    const List<vector> Fext(F);
+    const List<vector> tauExt(tau);
+    List<vector> Ffric(F.size(), Zero);
+    List<vector> tauFric(F.size(), Zero);
+
+    // Friction of each resting contact [N], by position in 'resting'
+    List<vector> friction(resting.size(), Zero);
+
+    std::vector<row> rowsI, rowsK;
+    std::vector<std::vector<label>> bodyContacts;
+
+    auto solveIsland =
+    [&](const std::vector<label>& cs, const UList<vector>& Fb,
+        const UList<vector>& tb, Eigen::VectorXd& phi)
+    {
+        const label n = cs.size();
+        rowsI.assign(n, row());
+        rowsK.assign(n, row());
+
+        // Jacobian rows and the bodies' contact lists
+        std::vector<label> bodyList;
+        for (label a = 0; a < n; ++a)
+        {
+            const contact& c = contacts[cs[a]];
+            const rigidBody& bi = bodies[c.i];
+            const vector ri(c.p - bi.x());
+            row& Ri = rowsI[a];
+            Ri.lin = c.n;
+            Ri.ang = (ri ^ c.n);
+            Ri.wLin = bi.invMass()*Ri.lin;
+            Ri.wAng = bi.applyInvInertia(Ri.ang);
+
+            if (c.k >= 0 && !fixed[c.k])
+            {
+                const rigidBody& bk = bodies[c.k];
+                const vector rk(c.p - bk.x());
+                row& Rk = rowsK[a];
+                Rk.lin = -c.n;
+                Rk.ang = -(rk ^ c.n);
+                Rk.wLin = bk.invMass()*Rk.lin;
+                Rk.wAng = bk.applyInvInertia(Rk.ang);
+            }
+        }
+
+        // A = J M^-1 J^T, summed over the bodies two contacts share
+        Eigen::MatrixXd A(Eigen::MatrixXd::Zero(n, n));
+        for (label a = 0; a < n; ++a)
+        {
+            const contact& ca = contacts[cs[a]];
+            for (label b = a; b < n; ++b)
+            {
+                const contact& cb = contacts[cs[b]];
+                scalar sum = 0;
+                auto add = [&](label bodyA, const row& ra, label bodyB,
+                               const row& rb)
+                {
+                    if (bodyA == bodyB && bodyA >= 0 && !fixed[bodyA])
+                    {
+                        sum += (ra.lin & rb.wLin) + (ra.ang & rb.wAng);
+                    }
+                };
+                add(ca.i, rowsI[a], cb.i, rowsI[b]);
+                add(ca.i, rowsI[a], cb.k, rowsK[b]);
+                add(ca.k, rowsK[a], cb.i, rowsI[b]);
+                add(ca.k, rowsK[a], cb.k, rowsK[b]);
+                A(a, b) = sum;
+                A(b, a) = sum;
+            }
+        }
+
+        // B: d'' without contact forces (eq 28), plus the step term
+        Eigen::VectorXd B(n);
+        for (label a = 0; a < n; ++a)
+        {
+            const contact& c = contacts[cs[a]];
+            const vector aRel(relativeAcceleration(c, bodies, fixed, Fb, tb));
+            const vector vRel
+            (
+                collisionResolver::relativeVelocity(c, bodies, fixed)
+            );
+            const scalar vn = vRel & c.n;
+            B(a) =
+                (c.n & aRel) + 2*(c.nDot & vRel)
+              + 2*(max(c.gap, scalar(0)) + h*vn)/sqr(h);
+        }
+
+        phi.resize(n);
+        const lcpResult lr = solver_->solve(A, B, phi);
+        res.iterations += lr.iterations;
+        res.converged = res.converged && lr.converged;
+        res.maxViolation = max(res.maxViolation, lr.maxViolation);
+        res.largestIsland = max(res.largestIsland, n);
+        for (label a = 0; a < n; ++a)
+        {
+            phi(a) = max(phi(a), scalar(0));
+        }
+    };
+
+    // Position of each resting contact in 'resting'
+    std::vector<label> slot(contacts.size(), -1);
+    forAll(resting, s)
+    {
+        slot[resting[s]] = s;
+    }
+
+    // Pass 1: normal forces without friction
+    List<scalar> phiAll(contacts.size(), 0);
+    for (const label r : roots)
+    {
+        Eigen::VectorXd phi;
+        solveIsland(islandOf[r], Fext, tauExt, phi);
+        forAll(islandOf[r], a)
+        {
+            phiAll[islandOf[r][a]] = phi(a);
+        }
+    }
+
+    if (anyFriction)
+    {
+        // Friction from the predicted slip at the end of the step, clamped
+        // to mu phi (eq 9); two Gauss-Seidel sweeps for coupled contacts
+        List<vector> Ftot(Fext);
+        List<vector> tauTot(tauExt);
+        for (const label ci : resting)
+        {
+            applyForce
+            (
+                contacts[ci], phiAll[ci]*contacts[ci].n, bodies, fixed,
+                Ftot, tauTot
+            );
+        }
+
+        for (label sweep = 0; sweep < 2; ++sweep)
+        {
+            for (const label ci : resting)
+            {
+                const contact& c = contacts[ci];
+                const scalar limit = c.mu*phiAll[ci];
+                if (limit <= 0)
+                {
+                    continue;
+                }
+                vector& f = friction[slot[ci]];
+
+                // Remove this contact's friction, then predict the slip
+                applyForce(c, -f, bodies, fixed, Ftot, tauTot);
+                applyForce(c, -f, bodies, fixed, Ffric, tauFric);
+
+                const vector vRel
+                (
+                    collisionResolver::relativeVelocity(c, bodies, fixed)
+                  + h*relativeAcceleration(c, bodies, fixed, Ftot, tauTot)
+                );
+                const vector vt(vRel - (vRel & c.n)*c.n);
+                const scalar slip = mag(vt);
+
+                f = Zero;
+                if (slip > VSMALL)
+                {
+                    const vector t(-vt/slip);
+                    const scalar fStop =
+                        slip
+                       /(h*collisionResolver::effectiveInvMass
+                        (
+                            c, t, bodies, fixed
+                        ));
+                    f = min(limit, fStop)*t;
+                }
+
+                applyForce(c, f, bodies, fixed, Ftot, tauTot);
+                applyForce(c, f, bodies, fixed, Ffric, tauFric);
+            }
+        }
+
+        // Pass 2: normal forces with friction in B
+        List<vector> Fb(Fext);
+        List<vector> tb(tauExt);
+        forAll(Fb, b)
+        {
+            Fb[b] += Ffric[b];
+            tb[b] += tauFric[b];
+        }
+        for (const label r : roots)
+        {
+            Eigen::VectorXd phi;
+            solveIsland(islandOf[r], Fb, tb, phi);
+            forAll(islandOf[r], a)
+            {
+                phiAll[islandOf[r][a]] = phi(a);
+            }
+        }
+    }
+
+    // Total: external + friction + normal
+    forAll(F, b)
+    {
+        F[b] = Fext[b] + Ffric[b];
+        tau[b] = tauExt[b] + tauFric[b];
+    }
+    for (const label ci : resting)
+    {
+        applyForce
+        (
+            contacts[ci], phiAll[ci]*contacts[ci].n, bodies, fixed, F, tau
+        );
+    }
+
+    return res;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,88 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "bedOutput.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "IOobject.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::bedOutput::bedOutput
+(
+    const fileName& casePath,
+    const tube& container,
+    const pelletShape& shape,
+    const UList<rigidBody>& bodies
+)
+:
+    dir_(casePath/"postProcessing"/"rbdPackBed"),
+    stl_(casePath/"constant"/"triSurface"/"pellets.stl"),
+    tube_(container),
+    shape_(shape),
+    bodies_(bodies)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::rbd::bedOutput::commit(const fileName& tmp, const fileName& target)
+{
+    if (!Foam::mv(tmp, target))
+    {
+        FatalErrorInFunction
+            << "Cannot move " << tmp << " to " << target
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::rbd::bedOutput::writePellets() const
+{
+    mkDir(dir_);
+    const fileName target(dir_/"pellets.csv");
+    const fileName tmp(target + ".tmp");
+    {
+        OFstream os(tmp);
+        os.precision(12);
+        os  << "id,shape,x,y,z,qw,qx,qy,qz" << nl;
+        forAll(bodies_, i)
+        {
+            const point& x = bodies_[i].x();
+            const quaternion& q = bodies_[i].q();
+            os  << i << ',' << shape_.type() << ','
+                << x.x() << ',' << x.y() << ',' << x.z() << ','
+                << q.w() << ',' << q.v().x() << ',' << q.v().y() << ','
+                << q.v().z() << nl;
+        }
+    }
+    commit(tmp, target);
+}
+
+
+void Foam::rbd::bedOutput::writeSummary(const dictionary& summary) const
+{
+    mkDir(dir_);
+    const fileName target(dir_/"summary");
+    const fileName tmp(target + ".tmp");
+    {
+        OFstream os(tmp);
+        IOobject::writeBanner(os);
+        os.beginBlock("FoamFile");
+        os.writeEntry("version", 2.0);
+        os.writeEntry("format", word("ascii"));
+        os.writeEntry("class", word("dictionary"));
+        os.writeEntry("location", fileName("postProcessing/rbdPackBed"));
+        os.writeEntry("object", word("summary"));
+        os.endBlock();
+        IOobject::writeDivider(os);
+        os  << nl;
+        summary.write(os, false);
+        IOobject::writeEndDivider(os);
+    }
+    commit(tmp, target);
+}
+
+
+// ************************************************************************* //

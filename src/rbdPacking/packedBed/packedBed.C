@@ -1,0 +1,416 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "packedBed.H"
+#include "dictionaryChecks.H"
+#include "bedOutput.H"
+#include "mathematicalConstants.H"
+#include "OSspecific.H"
+
+using Foam::constant::mathematical::pi;
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
+:
+    runTime_(runTime),
+    tube_(dict.subDict("container")),
+    shape_(pelletShape::New(dict.subDict("pellets"))),
+    material_
+    {
+        getPositive(dict.subDict("pellets"), "density", "kg/m^3"),
+        getNonNegativeOrDefault(dict.subDict("pellets"), "friction", 0.1, "-"),
+        getInRangeOrDefault
+        (
+            dict.subDict("pellets"), "restitution", 0.9, 0, 1, "-"
+        )
+    },
+    number_(0),
+    fillHeight_(0),
+    rotates_(true),
+    loading_(dict.subOrEmptyDict("loading"), tube_, shape_()),
+    controls_(dict.subOrEmptyDict("simulation")),
+    porosityHeight_(-1),
+    radialBins_(100),
+    axialBins_(100),
+    cellsPerDiameter_(8),
+    contactTreatment_("none"),
+    world_(),
+    settled_(false),
+    wallTime_(0),
+    finalOverlap_(0)
+{
+    const dictionary& containerDict = dict.subDict("container");
+    const dictionary& pelletsDict = dict.subDict("pellets");
+    const pelletShape& shape = shape_();
+
+    // The tube must take a pellet in any orientation
+    const scalar rb = shape.boundingRadius();
+    if (tube_.radius() <= rb)
+    {
+        badEntry
+        (
+            containerDict, "diameter", tube_.diameter(),
+            "a diameter above the pellets' bounding diameter "
+          + Foam::name(2*rb) + " [m] (pellet shape " + shape.type()
+          + ", diameter " + Foam::name(shape.diameter()) + ")"
+        );
+    }
+
+    // How many pellets: 'number', or 'fillHeight' with the porosity
+    // estimated by Benyahia and O'Neill's correlation for any shape
+    const scalar R = tube_.radius();
+    const scalar N = tube_.diameter()/shape.volumeEquivalentDiameter();
+    const scalar epsEstimate =
+        0.1504 + 0.2024/shape.sphericity() + 1.0814/sqr(N + 0.1226);
+    const bool hasNumber = pelletsDict.found("number");
+    const bool hasFill = pelletsDict.found("fillHeight");
+    if (hasNumber == hasFill)
+    {
+        FatalIOErrorInFunction(pelletsDict)
+            << "Give exactly one of 'number' (pellets [-]) and 'fillHeight' "
+            << "(bed height to fill [m]) in " << pelletsDict.name()
+            << exit(FatalIOError);
+    }
+    if (hasNumber)
+    {
+        number_ = getPositiveLabel(pelletsDict, "number");
+    }
+    else
+    {
+        fillHeight_ = getPositive(pelletsDict, "fillHeight", "m");
+        number_ = max
+        (
+            label(1),
+            label(round(fillHeight_*pi*sqr(R)*(1 - epsEstimate)
+           /shape.volume()))
+        );
+    }
+
+    // The pellets must fit below the release height
+    const scalar heightEstimate =
+        number_*shape.volume()/((1 - epsEstimate)*pi*sqr(R));
+    if (heightEstimate > tube_.height())
+    {
+        FatalIOErrorInFunction(containerDict)
+            << "Bad entry 'height " << tube_.height() << ";' in "
+            << containerDict.name() << nl
+            << "    " << number_ << " pellets fill about " << heightEstimate
+            << " m of this tube (porosity " << epsEstimate
+            << " by Benyahia and O'Neill); allowed: a height above that, "
+            << "or fewer pellets" << nl
+            << exit(FatalIOError);
+    }
+
+    // Rotation: spheres without friction never pick up spin
+    rotates_ = pelletsDict.getOrDefault<bool>("rotation", true);
+    if
+    (
+        shape.isSphere() && material_.friction == 0 && tube_.friction() == 0
+    )
+    {
+        rotates_ = false;
+    }
+
+    // Analysis
+    const dictionary& analysisDict = dict.subOrEmptyDict("analysis");
+    checkKnownEntries
+    (
+        analysisDict, {"porosityHeight", "radialBins", "axialBins"}
+    );
+    if (analysisDict.found("porosityHeight"))
+    {
+        porosityHeight_ = getPositive(analysisDict, "porosityHeight", "m");
+    }
+    radialBins_ = getLabelOrDefault(analysisDict, "radialBins", 100, 1);
+    axialBins_ = getLabelOrDefault(analysisDict, "axialBins", 100, 1);
+
+    // Case writing
+    const dictionary& cfdDict = dict.subOrEmptyDict("cfdCase");
+    cellsPerDiameter_ = getLabelOrDefault(cfdDict, "cellsPerDiameter", 8, 1);
+    contactTreatment_ = getChoiceOrDefault
+    (
+        cfdDict, "contactTreatment", "none",
+        {"none", "shrink", "bridges", "caps"}
+    );
+
+    world_.reset
+    (
+        new world(tube_, shape, material_, rotates_, controls_)
+    );
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::rbd::packedBed::releasePellets
+(
+    labelList& lastOfColumn,
+    label released
+)
+{
+    const UList<rigidBody>& bodies = world_->bodies();
+    const scalar clearance = loading_.clearance();
+    const scalar rb = shape_->boundingRadius();
+
+    for (label c = 0; c < loading_.nColumns() && released < number_; ++c)
+    {
+        const point& slot = loading_.column(c);
+        if
+        (
+            lastOfColumn[c] >= 0
+         && mag(bodies[lastOfColumn[c]].x() - slot) < clearance
+        )
+        {
+            continue;
+        }
+
+        point x;
+        quaternion q;
+        loading_.nextPose(c, x, q);
+
+        // Nothing else may overlap the release point: the recent pellets
+        // are the only ones up there
+        bool free = true;
+        const label first = max(0, bodies.size() - 8*loading_.nColumns());
+        for (label i = first; i < bodies.size(); ++i)
+        {
+            if (mag(bodies[i].x() - x) < 2*rb + world_->band())
+            {
+                free = false;
+                break;
+            }
+        }
+        if (!free)
+        {
+            continue;
+        }
+
+        lastOfColumn[c] = world_->addBody(x, q);
+        ++released;
+    }
+
+    return released;
+}
+
+
+Foam::scalar Foam::rbd::packedBed::bedHeight() const
+{
+    scalar top = 0;
+    for (const rigidBody& b : world_->bodies())
+    {
+        top = max(top, b.x().z() + shape_->boundingRadius());
+    }
+    return top;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::rbd::packedBed::writeSettings(Ostream& os) const
+{
+    os  << nl << "Effective settings (defaults included):" << nl;
+
+    os.beginBlock("container");
+    tube_.write(os);
+    os.endBlock();
+
+    os.beginBlock("pellets");
+    shape_->write(os);
+    os.writeEntry("number", number_);
+    if (fillHeight_ > 0)
+    {
+        os.writeEntry("fillHeight", fillHeight_);
+    }
+    os.writeEntry("density", material_.density);
+    os.writeEntry("friction", material_.friction);
+    os.writeEntry("restitution", material_.restitution);
+    os.writeEntry("rotation", Switch(rotates_));
+    os.endBlock();
+
+    os.beginBlock("loading");
+    loading_.write(os);
+    os.endBlock();
+
+    os.beginBlock("simulation");
+    controls_.write(os);
+    world_->restingSolver().solver().write(os);
+    os.endBlock();
+
+    os.beginBlock("analysis");
+    if (porosityHeight_ > 0)
+    {
+        os.writeEntry("porosityHeight", porosityHeight_);
+    }
+    else
+    {
+        os.writeKeyword("porosityHeight") << "bedHeight - 1 dp" << nl;
+    }
+    os.writeEntry("radialBins", radialBins_);
+    os.writeEntry("axialBins", axialBins_);
+    os.endBlock();
+
+    os.beginBlock("cfdCase");
+    os.writeEntry("cellsPerDiameter", cellsPerDiameter_);
+    os.writeEntry("contactTreatment", contactTreatment_);
+    os.endBlock();
+
+    const pelletShape& shape = shape_();
+    os  << nl << "Pellet: volume " << shape.volume() << " m^3, mass "
+        << material_.density*shape.volume() << " kg, dpv "
+        << shape.volumeEquivalentDiameter() << " m, sphericity "
+        << shape.sphericity() << nl
+        << "Tube to pellet diameter ratio N = dt/dp = "
+        << tube_.diameter()/shape.diameter() << nl
+        << "Proximity band lambda = " << world_->band() << " m" << nl
+        << endl;
+}
+
+
+void Foam::rbd::packedBed::run()
+{
+    clockTime timer;
+    world& w = world_();
+    const simulationControls& ctrl = controls_;
+    const pelletShape& shape = shape_();
+
+    const scalar mass = material_.density*shape.volume();
+    const scalar Eref = number_*mass*ctrl.gravity*shape.diameter();
+    const scalar moving = ctrl.restingVelocity;
+
+    labelList lastOfColumn(loading_.nColumns(), -1);
+    label released = 0;
+    scalar quietTime = 0;
+    scalar nextLog = 0;
+    scalar lastRelease = 0;
+    bool warnedStall = false;
+    settled_ = false;
+
+    Info<< "Packing " << number_ << ' ' << shape.type() << " pellets" << nl
+        << endl;
+
+    while (w.time() < ctrl.endTime - 1e-12)
+    {
+        const label before = released;
+        released = releasePellets(lastOfColumn, released);
+        if (released > before)
+        {
+            lastRelease = w.time();
+        }
+
+        const scalar tOuter =
+            ctrl.deltaT*(std::floor(w.time()/ctrl.deltaT + 1e-9) + 1);
+        w.step(min(tOuter, ctrl.endTime) - w.time());
+
+        if (w.time() < tOuter - 1e-12)
+        {
+            continue;
+        }
+
+        // Outer interval: termination test and progress
+        const scalar KE = w.kineticEnergy();
+        if (released == number_)
+        {
+            quietTime = (KE <= ctrl.settleEnergy*Eref) ? quietTime + ctrl.deltaT
+                                                        : 0;
+            if (quietTime >= ctrl.settleTime - 1e-12)
+            {
+                settled_ = true;
+            }
+        }
+        else if (!warnedStall && w.time() - lastRelease > 2)
+        {
+            WarningInFunction
+                << "No pellet could be released for 2 s: the bed has "
+                << "reached the release height with " << released << " of "
+                << number_ << " pellets" << endl;
+            warnedStall = true;
+        }
+
+        if (w.time() >= nextLog - 1e-12 || settled_)
+        {
+            Info<< "Time = " << w.time() << " s  pellets " << released
+                << '/' << number_ << "  moving " << w.nMoving(moving)
+                << "  KE = " << KE << " J  steps " << w.stats().steps
+                << "  maxOverlap " << w.stats().maxOverlap << " m"
+                << "  ExecutionTime = " << timer.elapsedTime() << " s"
+                << endl;
+            nextLog += ctrl.logInterval;
+        }
+
+        if (settled_ || (warnedStall && KE <= ctrl.settleEnergy*Eref))
+        {
+            break;
+        }
+    }
+
+    wallTime_ = timer.elapsedTime();
+    finalOverlap_ = w.currentMaxOverlap();
+
+    Info<< nl;
+    if (settled_)
+    {
+        Info<< "Settled: kinetic energy below " << ctrl.settleEnergy
+            << " n m g dp for " << ctrl.settleTime << " s" << nl;
+    }
+    else
+    {
+        WarningInFunction
+            << "Not settled by endTime " << ctrl.endTime << " s (kinetic "
+            << "energy " << w.kineticEnergy() << " J)" << endl;
+    }
+    const world::statistics& s = w.stats();
+    Info<< "Simulated " << w.time() << " s in " << s.steps << " steps ("
+        << "smallest " << s.minStep << " s), " << s.collisions
+        << " collisions, " << s.restingSolves << " resting-contact solves "
+        << "(largest island " << s.largestIsland << " contacts, "
+        << s.lcpFailures << " not converged), " << s.projections
+        << " overlap corrections" << nl
+        << "Wall time " << wallTime_ << " s" << nl << endl;
+}
+
+
+void Foam::rbd::packedBed::write() const
+{
+    const world& w = world_();
+    const pelletShape& shape = shape_();
+    const scalar H =
+        porosityHeight_ > 0 ? porosityHeight_ : bedHeight() - shape.diameter();
+
+    bedOutput out(runTime_.path(), tube_, shape, w.bodies());
+    out.writePellets();
+    const scalar eps = out.writeProfiles(H, radialBins_, axialBins_);
+    out.writeSTL();
+
+    dictionary summary;
+    summary.add("pellets", w.bodies().size());
+    summary.add("shape", shape.type());
+    summary.add("tubeDiameter", tube_.diameter());
+    summary.add("pelletDiameter", shape.diameter());
+    summary.add("volumeEquivalentDiameter", shape.volumeEquivalentDiameter());
+    summary.add("diameterRatio", tube_.diameter()/shape.diameter());
+    summary.add("bulkPorosity", eps);
+    summary.add("porosityHeight", H);
+    summary.add("bedHeight", bedHeight());
+    summary.add("maxOverlap", w.stats().maxOverlap);
+    summary.add("finalMaxOverlap", finalOverlap_);
+    summary.add("simulatedTime", w.time());
+    summary.add("wallTime", wallTime_);
+    summary.add("steps", w.stats().steps);
+    summary.add("collisions", w.stats().collisions);
+    summary.add("lcpFailures", w.stats().lcpFailures);
+    summary.add("kineticEnergy", w.kineticEnergy());
+    summary.add("settled", Switch(settled_));
+    out.writeSummary(summary);
+
+    Info<< "Bulk porosity below " << H << " m: " << eps << nl
+        << "Largest interpenetration during the run: "
+        << w.stats().maxOverlap << " m ("
+        << 100*w.stats().maxOverlap/shape.diameter() << " % of dp)" << nl
+        << "Wrote " << out.directory() << " and " << out.stlFile() << nl
+        << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,92 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ring.H"
+#include "dictionaryChecks.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+using Foam::constant::mathematical::pi;
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace rbd
+{
+    defineTypeNameAndDebug(ring, 0);
+    addToRunTimeSelectionTable(pelletShape, ring, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::ring::ring(const dictionary& dict)
+:
+    pelletShape(dict, 8008),
+    d_(getPositive(dict, "diameter", "m")),
+    di_(getPositive(dict, "innerDiameter", "m")),
+    h_(getPositive(dict, "height", "m"))
+{
+    checkEntries(dict, {"diameter", "innerDiameter", "height"});
+
+    if (di_ >= d_)
+    {
+        badEntry
+        (
+            dict, "innerDiameter", di_,
+            "a number > 0 and below diameter (" + Foam::name(d_) + ") [m]"
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::rbd::ring::volume() const
+{
+    return 0.25*pi*(sqr(d_) - sqr(di_))*h_;
+}
+
+
+Foam::vector Foam::rbd::ring::principalInertiaPerDensity() const
+{
+    // Hollow cylinder: Izz = m (a^2 + b^2)/2,
+    // Ixx = Iyy = m (3 (a^2 + b^2) + h^2)/12
+    const scalar m = volume();
+    const scalar s2 = sqr(0.5*d_) + sqr(0.5*di_);
+    const scalar Ixx = m*(3*s2 + sqr(h_))/12;
+    return vector(Ixx, Ixx, 0.5*m*s2);
+}
+
+
+Foam::scalar Foam::rbd::ring::boundingRadius() const
+{
+    return Foam::sqrt(sqr(0.5*d_) + sqr(0.5*h_));
+}
+
+
+Foam::scalar Foam::rbd::ring::diameter() const
+{
+    return d_;
+}
+
+
+Foam::scalar Foam::rbd::ring::area() const
+{
+    return pi*(d_ + di_)*h_ + 0.5*pi*(sqr(d_) - sqr(di_));
+}
+
+
+void Foam::rbd::ring::write(Ostream& os) const
+{
+    pelletShape::write(os);
+    os.writeEntry("diameter", d_);
+    os.writeEntry("innerDiameter", di_);
+    os.writeEntry("height", h_);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,457 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "world.H"
+#include "sphereContacts.H"
+#include "midpointIntegrator.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- Smallest h >= 0 with a/2 h^2 + b h = c (a, b, c >= 0, a + b > 0)
+    Foam::scalar timeToCover
+    (
+        const Foam::scalar a,
+        const Foam::scalar b,
+        const Foam::scalar c
+    )
+    {
+        if (a <= 0)
+        {
+            return c/b;
+        }
+        // Stable form of (-b + sqrt(b^2 + 2 a c))/a
+        return 2*c/(b + Foam::sqrt(Foam::sqr(b) + 2*a*c));
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::world::world
+(
+    const tube& container,
+    const pelletShape& shape,
+    const pelletMaterial& material,
+    const bool rotates,
+    const simulationControls& controls
+)
+:
+    tube_(container),
+    shape_(shape),
+    controls_(controls),
+    material_(material),
+    rotates_(rotates),
+    rb_(shape.boundingRadius()),
+    band_(controls.proximity*shape.boundingRadius()),
+    touch_(controls.contactTolerance*shape.diameter()),
+    slop_(0.1*controls.contactTolerance*shape.diameter()),
+    bodies_(),
+    fixed_(),
+    slowTime_(),
+    neighbours_(controls.proximity*shape.boundingRadius()),
+    collisions_
+    (
+        controls.restingVelocity,
+        controls.slipVelocity,
+        controls.restitutionSweeps,
+        controls.maxSweeps
+    ),
+    resting_(controls.dict),
+    contacts_(),
+    restingList_(),
+    F_(),
+    tau_(),
+    time_(0),
+    stats_()
+{
+    if (!shape_.isSphere())
+    {
+        FatalErrorInFunction
+            << "Pellet shape '" << shape_.type() << "': contacts between "
+            << "nonspherical pellets (triangle meshes) are not implemented "
+            << "yet; only 'sphere' can be packed in this version."
+            << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::rbd::world::addBody(const point& x, const quaternion& q)
+{
+    const scalar m = material_.density*shape_.volume();
+    const vector I = material_.density*shape_.principalInertiaPerDensity();
+
+    bodies_.append(rigidBody(m, I, x, q, rotates_));
+    fixed_.append(false);
+    slowTime_.append(0);
+    return bodies_.size() - 1;
+}
+
+
+void Foam::rbd::world::setVelocity
+(
+    const label i,
+    const vector& v,
+    const vector& omega
+)
+{
+    rigidBody& b = bodies_[i];
+    // L = I omega with I = (I^-1)^-1 in the world frame
+    const vector L = rotates_ ? (inv(b.invInertia()) & omega) : vector::zero;
+    b.setState(b.x(), b.q(), b.mass()*v, L);
+    fixed_[i] = false;
+    slowTime_[i] = 0;
+}
+
+
+void Foam::rbd::world::findContacts()
+{
+    contacts_.clear();
+
+    pointField x(bodies_.size());
+    forAll(bodies_, i)
+    {
+        x[i] = bodies_[i].x();
+    }
+    neighbours_.update(x, 2*rb_ + band_);
+
+    const scalar a = rb_;
+    contact c;
+    for (const labelPair& pr : neighbours_.pairs())
+    {
+        label i = pr.first();
+        label k = pr.second();
+        if (fixed_[i] && fixed_[k])
+        {
+            continue;
+        }
+        if (fixed_[i])
+        {
+            std::swap(i, k);
+        }
+        if
+        (
+            sphereContacts::sphereSphere
+            (
+                i, bodies_[i], a, k, bodies_[k], a, band_, c
+            )
+        )
+        {
+            c.e = material_.restitution;
+            c.mu = material_.friction;
+            contacts_.append(c);
+        }
+    }
+
+    forAll(bodies_, i)
+    {
+        if (!fixed_[i])
+        {
+            sphereContacts::sphereTube
+            (
+                i, bodies_[i], a, tube_, band_, contacts_
+            );
+        }
+    }
+
+    for (const contact& ct : contacts_)
+    {
+        stats_.maxOverlap = max(stats_.maxOverlap, -ct.gap);
+    }
+}
+
+
+void Foam::rbd::world::projectOverlaps()
+{
+    // Gap of a sphere contact at the current positions
+    const scalar a = rb_;
+    const scalar R = tube_.radius();
+    auto gapOf = [&](const contact& c) -> scalar
+    {
+        const point& xi = bodies_[c.i].x();
+        if (c.k == tubeBottom)
+        {
+            return xi.z() - a;
+        }
+        if (c.k == tubeWall)
+        {
+            return R - tube::axialDistance(xi) - a;
+        }
+        return mag(xi - bodies_[c.k].x()) - 2*a;
+    };
+
+    for (label sweep = 0; sweep < 4; ++sweep)
+    {
+        bool moved = false;
+        for (contact& c : contacts_)
+        {
+            c.gap = gapOf(c);
+            if (c.gap >= -slop_)
+            {
+                continue;
+            }
+            const scalar wi = fixed_[c.i] ? 0 : bodies_[c.i].invMass();
+            const scalar wk =
+                (c.k >= 0 && !fixed_[c.k]) ? bodies_[c.k].invMass() : 0;
+            if (wi + wk <= 0)
+            {
+                continue;
+            }
+            const vector dx((-c.gap/(wi + wk))*c.n);
+            bodies_[c.i].displace(wi*dx);
+            if (wk > 0)
+            {
+                bodies_[c.k].displace(-wk*dx);
+            }
+            c.gap = 0;
+            moved = true;
+            ++stats_.projections;
+        }
+        if (!moved)
+        {
+            break;
+        }
+    }
+}
+
+
+Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
+{
+    const scalar g = controls_.gravity;
+    scalar h = hMax;
+
+    // No body moves more than lambda/10 (eq 38): no tunnelling
+    scalar sMax = 0;
+    forAll(bodies_, i)
+    {
+        if (!fixed_[i])
+        {
+            const rigidBody& b = bodies_[i];
+            sMax = max(sMax, mag(b.v()) + mag(b.omega())*rb_);
+        }
+    }
+    h = min(h, timeToCover(g, sMax, 0.1*band_));
+
+    // No approaching contact closes past half the touching gap
+    const scalar epsP = controls_.restingVelocity;
+    for (const contact& c : contacts_)
+    {
+        if (c.gap > touch_)
+        {
+            const scalar vn =
+                collisionResolver::relativeVelocity(c, bodies_, fixed_)
+              & c.n;
+            if (vn < -epsP)
+            {
+                h = min(h, timeToCover(g, -vn, c.gap - 0.5*touch_));
+            }
+        }
+    }
+
+    return h;
+}
+
+
+void Foam::rbd::world::updateSleep(const scalar h)
+{
+    const scalar vSleep = controls_.sleepVelocity;
+    if (vSleep <= 0)
+    {
+        return;
+    }
+
+    forAll(bodies_, i)
+    {
+        if (fixed_[i])
+        {
+            continue;
+        }
+        rigidBody& b = bodies_[i];
+        if (mag(b.v()) + mag(b.omega())*rb_ < vSleep)
+        {
+            slowTime_[i] += h;
+            if (slowTime_[i] >= controls_.sleepTime)
+            {
+                fixed_[i] = true;
+                b.setState(b.x(), b.q(), Zero, Zero);
+            }
+        }
+        else
+        {
+            slowTime_[i] = 0;
+        }
+    }
+}
+
+
+Foam::scalar Foam::rbd::world::step(const scalar hMax)
+{
+    const scalar epsP = controls_.restingVelocity;
+    const scalar g = controls_.gravity;
+
+    // 1-2. Broad and narrow phase
+    findContacts();
+
+    // 3. Residual interpenetration
+    projectOverlaps();
+
+    // Sleeping bodies hit by a collision wake up first
+    bool woke = false;
+    for (const contact& c : contacts_)
+    {
+        if (c.k >= 0 && fixed_[c.k] && c.gap <= touch_)
+        {
+            const scalar vn = bodies_[c.i].pointVelocity(c.p) & c.n;
+            if (vn < -epsP)
+            {
+                fixed_[c.k] = false;
+                slowTime_[c.k] = 0;
+                woke = true;
+            }
+        }
+    }
+    if (woke)
+    {
+        findContacts();
+    }
+
+    // 4. Collisions
+    boolList woken(bodies_.size(), false);
+    const collisionResolver::result cr =
+        collisions_.resolve(bodies_, contacts_, touch_, fixed_, woken);
+    stats_.collisions += cr.collisions;
+    stats_.impulses += cr.impulses;
+    forAll(woken, i)
+    {
+        if (woken[i])
+        {
+            fixed_[i] = false;
+            slowTime_[i] = 0;
+        }
+    }
+
+    // 5. Step length
+    const scalar h = chooseStep(hMax);
+
+    // 6. Resting contacts: slow, and able to touch within h
+    restingList_.clear();
+    forAll(contacts_, ci)
+    {
+        const contact& c = contacts_[ci];
+        const scalar vn =
+            collisionResolver::relativeVelocity(c, bodies_, fixed_) & c.n;
+        if
+        (
+            mag(vn) <= epsP
+         && c.gap <= touch_ + mag(vn)*h + g*sqr(h)
+        )
+        {
+            restingList_.append(ci);
+        }
+    }
+
+    F_.setSize(bodies_.size());
+    tau_.setSize(bodies_.size());
+    forAll(bodies_, i)
+    {
+        F_[i] = fixed_[i] ? Zero : vector(0, 0, -g*bodies_[i].mass());
+        tau_[i] = Zero;
+    }
+
+    if (restingList_.size())
+    {
+        const restingContactSolver::result rr = resting_.solve
+        (
+            bodies_, contacts_, restingList_, fixed_, h, F_, tau_
+        );
+        ++stats_.restingSolves;
+        stats_.largestIsland = max(stats_.largestIsland, rr.largestIsland);
+        if (!rr.converged)
+        {
+            ++stats_.lcpFailures;
+        }
+    }
+
+    // 7. Integration
+    forAll(bodies_, i)
+    {
+        if (!fixed_[i])
+        {
+            midpointIntegrator::step(bodies_[i], F_[i], tau_[i], h);
+        }
+    }
+
+    updateSleep(h);
+
+    time_ += h;
+    ++stats_.steps;
+    stats_.minStep = min(stats_.minStep, h);
+
+    return h;
+}
+
+
+void Foam::rbd::world::advance(const scalar dt)
+{
+    const scalar tEnd = time_ + dt;
+    while (tEnd - time_ > 1e-12*max(dt, scalar(1)))
+    {
+        step(tEnd - time_);
+    }
+    time_ = tEnd;
+}
+
+
+Foam::label Foam::rbd::world::nMoving(const scalar speed) const
+{
+    label n = 0;
+    forAll(bodies_, i)
+    {
+        const rigidBody& b = bodies_[i];
+        if (!fixed_[i] && mag(b.v()) + mag(b.omega())*rb_ > speed)
+        {
+            ++n;
+        }
+    }
+    return n;
+}
+
+
+Foam::scalar Foam::rbd::world::kineticEnergy() const
+{
+    scalar E = 0;
+    for (const rigidBody& b : bodies_)
+    {
+        E += b.kineticEnergy();
+    }
+    return E;
+}
+
+
+Foam::scalar Foam::rbd::world::potentialEnergy() const
+{
+    scalar E = 0;
+    for (const rigidBody& b : bodies_)
+    {
+        E += b.mass()*controls_.gravity*b.x().z();
+    }
+    return E;
+}
+
+
+Foam::scalar Foam::rbd::world::currentMaxOverlap()
+{
+    const statistics saved = stats_;
+    stats_.maxOverlap = 0;
+    findContacts();
+    const scalar current = stats_.maxOverlap;
+    stats_.maxOverlap = max(saved.maxOverlap, current);
+    return current;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,61 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Bad input to rbdPackBed: one case of badInput.cases (argument: its name).
+# Asserts: non-zero exit, the expected error text, the file named, no crash or
+# stack trace, and nothing written into the case.
+#------------------------------------------------------------------------------
+set -u
+here="$(cd "$(dirname "$0")" && pwd)"
+name="$1"
+line="$(grep -E "^$name[[:space:]]*\|" "$here/badInput.cases")"
+[ -n "$line" ] || { echo "no case '$name'"; exit 2; }
+action="$(echo "$line" | cut -d'|' -f2 | sed 's/^ *//; s/ *$//')"
+expect="$(echo "$line" | cut -d'|' -f3- | sed 's/^ *//; s/ *$//')"
+
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+cp -r "$here/cases/smallSpheres" "$tmp/case"
+dict="$tmp/case/system/packingDict"
+caseArg="$tmp/case"
+
+set -- $action
+case "$1" in
+    set)    foamDictionary "$dict" -entry "$2" -set "$3" >/dev/null 2>&1 \
+                || { echo "foamDictionary -set failed"; exit 2; } ;;
+    remove) foamDictionary "$dict" -entry "$2" -remove >/dev/null 2>&1 \
+                || { echo "foamDictionary -remove failed"; exit 2; } ;;
+    sed)    sed -i "${action#sed }" "$dict" ;;
+    nocase) caseArg="$tmp/doesNotExist" ;;
+    nodict) rm "$dict" ;;
+    *)      echo "unknown action '$1'"; exit 2 ;;
+esac
+
+before="$(cd "$tmp" && find . | sort)"
+rbdPackBed -case "$caseArg" > "$tmp/log" 2>&1
+status=$?
+after="$(cd "$tmp" && find . -not -name log | sort)"
+
+fail=0
+if [ $status -eq 0 ]
+then
+    echo "FAIL: exit status 0"; fail=1
+fi
+if ! grep -Ezq -- "$expect" "$tmp/log"
+then
+    echo "FAIL: log does not match: $expect"; fail=1
+fi
+if [ "$1" != nocase ] && [ "$1" != nodict ] && ! grep -q "packingDict" "$tmp/log"
+then
+    echo "FAIL: the error does not name packingDict"; fail=1
+fi
+if grep -Eq "Segmentation|Aborted|stack trace|^#[0-9]+ |printStack|terminate called" "$tmp/log"
+then
+    echo "FAIL: crash or stack trace"; fail=1
+fi
+if [ "$before" != "$after" ]
+then
+    echo "FAIL: files were written:"; diff <(echo "$before") <(echo "$after"); fail=1
+fi
+echo "---- rbdPackBed log ($name, exit $status) ----"
+cat "$tmp/log"
+exit $fail

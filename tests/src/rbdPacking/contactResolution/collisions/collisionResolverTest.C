@@ -1,0 +1,140 @@
+// Impulses of src/rbdPacking/contactResolution/collisions (eqs 20-26)
+
+#include <gtest/gtest.h>
+#include "collisionResolver.H"
+#include "sphereContacts.H"
+#include <random>
+
+using namespace Foam;
+using namespace Foam::rbd;
+
+namespace
+{
+    const scalar a = 0.005;
+    const scalar m = 4.2e-3;
+    const vector I(0.4*m*a*a, 0.4*m*a*a, 0.4*m*a*a);
+
+    vector angularMomentum(const UList<rigidBody>& bs)
+    {
+        vector L(Zero);
+        for (const rigidBody& b : bs)
+        {
+            L += (b.x() ^ b.P()) + b.L();
+        }
+        return L;
+    }
+
+    vector linearMomentum(const UList<rigidBody>& bs)
+    {
+        return bs[0].P() + bs[1].P();
+    }
+
+    scalar energy(const UList<rigidBody>& bs)
+    {
+        return bs[0].kineticEnergy() + bs[1].kineticEnergy();
+    }
+}
+
+
+class twoSpheres : public ::testing::TestWithParam<std::pair<scalar, scalar>>
+{};
+
+TEST_P(twoSpheres, conserveMomentaAndObeyRestitutionLaw)
+{
+    const scalar e = GetParam().first;
+    const scalar mu = GetParam().second;
+
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> U(-1, 1);
+
+    for (int trial = 0; trial < 50; ++trial)
+    {
+        List<rigidBody> bs
+        ({
+            rigidBody(m, I, point(0, 0, 0), quaternion(1), true),
+            rigidBody(2*m, 2*I, point(0, 0, 0), quaternion(1), true)
+        });
+        // Touching at a random direction, approaching, random spins
+        vector n(U(rng), U(rng), U(rng));
+        n /= mag(n);
+        bs[0].setState(2*a*n, quaternion(1), m*(-n + 0.3*vector(U(rng), U(rng), U(rng))), I.x()*vector(U(rng), U(rng), U(rng))*100);
+        bs[1].setState(point::zero, quaternion(1), 2*m*0.2*vector(U(rng), U(rng), U(rng)), 2*I.x()*vector(U(rng), U(rng), U(rng))*100);
+
+        contact c;
+        ASSERT_TRUE
+        (
+            sphereContacts::sphereSphere(0, bs[0], a, 1, bs[1], a, 1e-3, c)
+        );
+        c.e = e;
+        c.mu = mu;
+
+        const boolList fixed(2, false);
+        boolList woken(2, false);
+        const scalar vn0 =
+            collisionResolver::relativeVelocity(c, bs, fixed) & c.n;
+        if (vn0 > -0.05)
+        {
+            continue;
+        }
+        const vector P0 = linearMomentum(bs);
+        const vector L0 = angularMomentum(bs);
+        const scalar E0 = energy(bs);
+
+        collisionResolver resolver(1e-3, 1e-6, 10, 100);
+        const List<contact> cs({c});
+        resolver.resolve(bs, cs, 1e-9, fixed, woken);
+
+        const scalar vn1 =
+            collisionResolver::relativeVelocity(c, bs, fixed) & c.n;
+
+        EXPECT_LT(mag(linearMomentum(bs) - P0), 1e-14);
+        EXPECT_LT(mag(angularMomentum(bs) - L0), 1e-15);
+        EXPECT_LE(energy(bs), E0*(1 + 1e-12));
+        if (mu == 0)
+        {
+            // Restitution law (eq 20)
+            EXPECT_NEAR(vn1, -e*vn0, 1e-12);
+        }
+        else
+        {
+            // Friction may only add to the separation it couples into
+            EXPECT_GE(vn1, -1e-12);
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    restitutionAndFriction,
+    twoSpheres,
+    ::testing::Values
+    (
+        std::make_pair(1.0, 0.0),
+        std::make_pair(0.9, 0.0),
+        std::make_pair(0.0, 0.0),
+        std::make_pair(0.9, 0.1),
+        std::make_pair(0.6, 0.9)
+    )
+);
+
+
+TEST(collisionResolver, frictionNeverReversesSlipOnTheFloor)
+{
+    // A sphere hitting the floor obliquely with high friction: the
+    // tangential impulse stops the slip at most, never reverses it
+    List<rigidBody> bs({rigidBody(m, I, point(0, 0, a), quaternion(1), true)});
+    bs[0].setState(point(0, 0, a), quaternion(1), m*vector(0.2, 0, -1), Zero);
+    tube t(1, 1, 5.0, 0.5);
+    DynamicList<contact> cs;
+    sphereContacts::sphereTube(0, bs[0], a, t, 1e-3, cs);
+    ASSERT_EQ(cs.size(), 1);
+
+    const boolList fixed(1, false);
+    boolList woken(1, false);
+    collisionResolver(1e-3, 1e-6, 10, 100).resolve(bs, cs, 1e-9, fixed, woken);
+
+    const vector vp = bs[0].pointVelocity(cs[0].p);
+    EXPECT_NEAR(vp.z(), 0.5, 1e-12);    // restitution 0.5 of 1 m/s
+    EXPECT_GE(vp.x(), -1e-12);          // slip stopped, not reversed
+    EXPECT_NEAR(vp.x(), 0, 1e-12);      // mu = 5 is enough to stop it
+}

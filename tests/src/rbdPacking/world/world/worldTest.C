@@ -1,0 +1,182 @@
+// Physics of src/rbdPacking/world against closed forms, at several step
+// sizes (the outer interval deltaT bounds every step).
+
+#include <gtest/gtest.h>
+#include "../../testTools/worldFixture.H"
+
+using namespace rbdTest;
+
+namespace
+{
+    const scalar g = 9.81;
+    const scalar d = 0.01;
+    const scalar a = 0.5*d;
+
+    std::string controlsWith(scalar deltaT)
+    {
+        return "deltaT " + std::to_string(deltaT) + ";";
+    }
+}
+
+
+class freeFall : public ::testing::TestWithParam<scalar> {};
+
+TEST_P(freeFall, matchesParabolaExactly)
+{
+    sphereScene s(1, d, 0, 1, 0, 1, controlsWith(GetParam()));
+    const scalar z0 = 5;
+    s().addBody(point(0, 0, z0), quaternion(1));
+    s().setVelocity(0, vector(0.1, 0, 2), Zero);
+
+    const scalar t = 0.3;
+    s().advance(t);
+    const rigidBody& b = s().bodies()[0];
+
+    EXPECT_NEAR(b.x().z(), z0 + 2*t - 0.5*g*t*t, 1e-12);
+    EXPECT_NEAR(b.x().x(), 0.1*t, 1e-12);
+    EXPECT_NEAR(b.v().z(), 2 - g*t, 1e-12);
+    EXPECT_GT(s().stats().steps, 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(stepSizes, freeFall, ::testing::Values(0.025, 1e-3));
+
+
+class bounce : public ::testing::TestWithParam<scalar> {};
+
+TEST_P(bounce, apexIsRestitutionSquaredTimesDropHeight)
+{
+    const scalar e = 0.8;
+    const scalar h = 0.1;   // drop height of the lowest point [m]
+    sphereScene s(1, d, 0, 1, 0, e, controlsWith(GetParam()));
+    s().addBody(point(0, 0, a + h), quaternion(1));
+
+    // Fall, bounce, and record the highest point of the first rebound
+    scalar apex = 0;
+    bool bounced = false;
+    while (s().time() < 0.5)
+    {
+        s().step(1e-3);
+        const rigidBody& b = s().bodies()[0];
+        if (b.v().z() > 0)
+        {
+            bounced = true;
+        }
+        if (bounced)
+        {
+            apex = max(apex, b.x().z() - a);
+            if (b.v().z() < 0)
+            {
+                break;
+            }
+        }
+    }
+    ASSERT_TRUE(bounced);
+    EXPECT_NEAR(apex, e*e*h, 1e-3*e*e*h);
+    EXPECT_LT(s().stats().maxOverlap, 1e-6*d);
+}
+
+INSTANTIATE_TEST_SUITE_P(stepSizes, bounce, ::testing::Values(0.025, 2e-3));
+
+
+TEST(sliding, sphereWithoutRotationStopsAfterVSquaredOverTwoMuG)
+{
+    const scalar mu = 0.3;
+    const scalar v0 = 1;
+    sphereScene s(1, d, 0, 0.5, mu, 0.5, "", false);
+    s().addBody(point(-0.3, 0, a), quaternion(1));
+    s().setVelocity(0, vector(v0, 0, 0), Zero);
+
+    s().advance(1);
+    const rigidBody& b = s().bodies()[0];
+
+    EXPECT_NEAR(b.x().x() + 0.3, sqr(v0)/(2*mu*g), 1e-4);
+    EXPECT_NEAR(mag(b.v()), 0, 1e-9);
+    EXPECT_NEAR(b.x().z(), a, 1e-9);
+}
+
+
+TEST(sliding, rotatingSphereEndsRollingAtFiveSeventhsOfItsSpeed)
+{
+    const scalar mu = 0.3;
+    const scalar v0 = 1;
+    sphereScene s(1, d, 0, 0.5, mu, 0.5);
+    s().addBody(point(-0.4, 0, a), quaternion(1));
+    s().setVelocity(0, vector(v0, 0, 0), Zero);
+
+    s().advance(0.5);
+    const rigidBody& b = s().bodies()[0];
+
+    // Rolling without slip: v = omega x (a e_z) ... v_x = omega_y a
+    EXPECT_NEAR(b.v().x(), 5.0/7.0*v0, 1e-4);
+    EXPECT_NEAR(b.omega().y()*a, b.v().x(), 1e-4);
+    EXPECT_NEAR(b.x().z(), a, 1e-9);
+}
+
+
+TEST(resting, sphereOnFloorStaysPutForTenSeconds)
+{
+    sphereScene s(0.1, d, 0.1, 0.9, 0.6, 0.6);
+    s().addBody(point(0.01, 0.02, a), quaternion(1));
+
+    s().advance(10);
+    const rigidBody& b = s().bodies()[0];
+
+    EXPECT_NEAR(b.x().z(), a, 1e-9);
+    EXPECT_NEAR(b.x().x(), 0.01, 1e-12);
+    EXPECT_NEAR(b.x().y(), 0.02, 1e-12);
+    EXPECT_LT(mag(b.v()), 1e-9);
+    EXPECT_LT(s().stats().maxOverlap, 1e-9);
+}
+
+
+TEST(resting, twentySphereColumnInNarrowTubeStaysStill)
+{
+    // Tube of 1.6 dp: the spheres settle in a zig-zag column, touching the
+    // wall and each other
+    sphereScene s(1.6*d, d, 0.1, 0.9, 0.6, 0.6, "sleepVelocity 0;");
+    for (label i = 0; i < 20; ++i)
+    {
+        const scalar x = (i % 2 ? 1 : -1)*0.25*d;
+        s().addBody(point(x, 0.1*x, a + 1.3*d*i), quaternion(1));
+    }
+
+    // Settle
+    s().advance(3);
+    const scalar overlapSettled = s().currentMaxOverlap();
+    List<point> settled(20);
+    forAll(settled, i)
+    {
+        settled[i] = s().bodies()[i].x();
+    }
+
+    // Ten more seconds
+    s().advance(10);
+    scalar drift = 0;
+    forAll(settled, i)
+    {
+        drift = max(drift, mag(s().bodies()[i].x() - settled[i]));
+    }
+
+    EXPECT_LT(drift, 1e-6*d);
+    EXPECT_LE(s().currentMaxOverlap(), max(overlapSettled, 1e-9*d));
+    EXPECT_LT(s().kineticEnergy(), 1e-12);
+    // Column height: every sphere rests on the one below it
+    scalar top = 0;
+    forAll(settled, i)
+    {
+        top = max(top, s().bodies()[i].x().z());
+    }
+    EXPECT_LT(top, a + 19*d);
+}
+
+
+TEST(energy, noDampingInFreeFlightWithSpin)
+{
+    // Energy in flight (no contact) is conserved to round-off
+    sphereScene s(1, d, 0.1, 0.9, 0.6, 0.6, "gravity 0;");
+    s().addBody(point(0, 0, 1), quaternion(1));
+    s().setVelocity(0, vector(0.01, 0.02, 0), vector(3, 1, 2));
+    const scalar E0 = s().kineticEnergy();
+    s().advance(2);
+    EXPECT_NEAR(s().kineticEnergy(), E0, 1e-12*E0);
+}
