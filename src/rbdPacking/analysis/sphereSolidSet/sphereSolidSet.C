@@ -28,7 +28,8 @@ namespace
         {
             for (int i = 0; i < n; ++i)
             {
-                scalar z = std::cos(M_PI*(i + 0.75)/(n + 0.5));
+                const scalar pi = Foam::constant::mathematical::pi;
+                scalar z = std::cos(pi*(i + 0.75)/(n + 0.5));
                 scalar dp = 1;
                 for (int iter = 0; iter < 100; ++iter)
                 {
@@ -85,7 +86,7 @@ namespace
         const int nExtra
     )
     {
-        const scalar halfPi = 0.5*M_PI;
+        const scalar halfPi = Foam::constant::mathematical::piByTwo;
 
         // Up to 2 slope breaks and the grading points down from 1e-8
         scalar points[48];
