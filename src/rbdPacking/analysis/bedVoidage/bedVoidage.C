@@ -1,0 +1,343 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "bedVoidage.H"
+#include "correlations.H"
+#include "error.H"
+#include "mathematicalConstants.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+void Foam::rbd::bedVoidage::checkBins(const label nBins, const char* what)
+{
+    if (nBins < 1)
+    {
+        FatalErrorInFunction
+            << what << ": number of bins " << nBins << " is not >= 1"
+            << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::rbd::bedVoidage::bedVoidage
+(
+    const solidSet& solids,
+    const scalar R,
+    const scalar H
+)
+:
+    bedVoidage(solids, R, 0, H)
+{}
+
+
+Foam::rbd::bedVoidage::bedVoidage
+(
+    const solidSet& solids,
+    const scalar R,
+    const scalar zLow,
+    const scalar zHigh
+)
+:
+    solids_(solids),
+    R_(R),
+    zLow_(zLow),
+    zHigh_(zHigh)
+{
+    if (!(R_ > 0) || !(zHigh_ > zLow_))
+    {
+        FatalErrorInFunction
+            << "need tube radius > 0 and zHigh > zLow; got R = " << R_
+            << " m, z from " << zLow_ << " to " << zHigh_ << " m"
+            << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::rbd::bedVoidage::bedVolume() const
+{
+    return constant::mathematical::pi*R_*R_*(zHigh_ - zLow_);
+}
+
+
+Foam::scalar Foam::rbd::bedVoidage::solidVolume() const
+{
+    scalar V = 0;
+    for (label i = 0; i < solids_.size(); ++i)
+    {
+        V += solids_.volume(i, zLow_, zHigh_);
+    }
+    return V;
+}
+
+
+Foam::scalar Foam::rbd::bedVoidage::bulkPorosity() const
+{
+    return 1 - solidVolume()/bedVolume();
+}
+
+
+Foam::scalar Foam::rbd::bedVoidage::solidArea(const scalar r) const
+{
+    scalar S = 0;
+    for (label i = 0; i < solids_.size(); ++i)
+    {
+        const scalarMinMax rRange(solids_.radialExtent(i));
+        const scalarMinMax zRange(solids_.axialExtent(i));
+        if
+        (
+            r > rRange.min() && r < rRange.max()
+         && zRange.max() > zLow_ && zRange.min() < zHigh_
+        )
+        {
+            S += solids_.cylinderArea(i, r, zLow_, zHigh_);
+        }
+    }
+    return S;
+}
+
+
+Foam::scalar Foam::rbd::bedVoidage::radialPorosity(const scalar r) const
+{
+    return
+        1
+      - solidArea(r)/(constant::mathematical::twoPi*r*(zHigh_ - zLow_));
+}
+
+
+Foam::scalarField Foam::rbd::bedVoidage::radialBinCentres
+(
+    const label nBins
+) const
+{
+    checkBins(nBins, "radial profile");
+    const scalar dr = R_/nBins;
+    scalarField r(nBins);
+    forAll(r, k)
+    {
+        r[k] = (k + 0.5)*dr;
+    }
+    return r;
+}
+
+
+Foam::scalarField Foam::rbd::bedVoidage::radialProfile
+(
+    const label nBins
+) const
+{
+    const scalarField r(radialBinCentres(nBins));
+    const scalar dr = R_/nBins;
+
+    // Each pellet adds to the bins whose centre its radial extent covers
+    scalarField S(nBins, Zero);
+    for (label i = 0; i < solids_.size(); ++i)
+    {
+        const scalarMinMax zRange(solids_.axialExtent(i));
+        if (!(zRange.max() > zLow_ && zRange.min() < zHigh_))
+        {
+            continue;
+        }
+        const scalarMinMax rRange(solids_.radialExtent(i));
+        const label kLo =
+            std::max(label(std::ceil(rRange.min()/dr - 0.5)), label(0));
+        const label kHi =
+            std::min(label(std::floor(rRange.max()/dr - 0.5)), nBins - 1);
+        for (label k = kLo; k <= kHi; ++k)
+        {
+            S[k] += solids_.cylinderArea(i, r[k], zLow_, zHigh_);
+        }
+    }
+
+    scalarField eps(nBins);
+    forAll(eps, k)
+    {
+        eps[k] =
+            1 - S[k]/(constant::mathematical::twoPi*r[k]*(zHigh_ - zLow_));
+    }
+    return eps;
+}
+
+
+Foam::scalarField Foam::rbd::bedVoidage::axialBinCentres
+(
+    const label nBins
+) const
+{
+    checkBins(nBins, "axial profile");
+    const scalar dz = (zHigh_ - zLow_)/nBins;
+    scalarField z(nBins);
+    forAll(z, k)
+    {
+        z[k] = zLow_ + (k + 0.5)*dz;
+    }
+    return z;
+}
+
+
+Foam::scalarField Foam::rbd::bedVoidage::axialProfile
+(
+    const label nBins
+) const
+{
+    checkBins(nBins, "axial profile");
+    const scalar dz = (zHigh_ - zLow_)/nBins;
+
+    // Each pellet adds to the slabs its axial extent meets
+    scalarField V(nBins, Zero);
+    for (label i = 0; i < solids_.size(); ++i)
+    {
+        const scalarMinMax zRange(solids_.axialExtent(i));
+        const label kLo =
+            std::max(label(std::floor((zRange.min() - zLow_)/dz)), label(0));
+        const label kHi =
+            std::min
+            (
+                label(std::floor((zRange.max() - zLow_)/dz)),
+                nBins - 1
+            );
+        for (label k = kLo; k <= kHi; ++k)
+        {
+            V[k] +=
+                solids_.volume(i, zLow_ + k*dz, zLow_ + (k + 1)*dz);
+        }
+    }
+
+    const scalar slabVolume = constant::mathematical::pi*R_*R_*dz;
+    scalarField eps(nBins);
+    forAll(eps, k)
+    {
+        eps[k] = 1 - V[k]/slabVolume;
+    }
+    return eps;
+}
+
+
+void Foam::rbd::bedVoidage::writeRadialProfile
+(
+    Ostream& os,
+    const label nBins,
+    const scalar dp,
+    const bool sphereCorrelations
+) const
+{
+    const scalarField r(radialBinCentres(nBins));
+    const scalarField eps(radialProfile(nBins));
+    const scalarField zWall((R_ - r)/dp);
+    const scalar epsBulk = bulkPorosity();
+    const scalar N = 2*R_/dp;
+
+    scalarField deKlerk, mueller;
+    if (sphereCorrelations)
+    {
+        deKlerk = correlations::evaluate
+        (
+            zWall,
+            [epsBulk](scalar z){ return correlations::deKlerk(z, epsBulk); }
+        );
+        mueller = correlations::evaluate
+        (
+            zWall,
+            [N](scalar z){ return correlations::mueller(z, N); }
+        );
+    }
+
+    const int oldPrecision = os.precision(10);
+
+    os  << "# Radial void fraction, eq 39: eps(r) = 1 - S_int(r)/S_total(r),"
+        << " at bin centres" << nl
+        << "# tube radius R = " << R_ << " m, z from " << zLow_ << " to "
+        << zHigh_ << " m, pellets " << solids_.size() << ", dp = " << dp
+        << " m, N = dt/dp = " << N << nl
+        << "# bulk porosity " << epsBulk << nl;
+    if (sphereCorrelations)
+    {
+        os  << "# deKlerk: de Klerk 2003 (recalled form), eps_b = bulk"
+            << " porosity above; R^2 = "
+            << correlations::rSquared(eps, deKlerk)
+            << ", RMSE = " << correlations::rmse(eps, deKlerk) << nl
+            << "# Mueller: Mueller 1992 (recalled form, suspect for N < 10:"
+            << " see correlations.H), eps_b = "
+            << correlations::muellerBulk(N) << "; R^2 = "
+            << correlations::rSquared(eps, mueller)
+            << ", RMSE = " << correlations::rmse(eps, mueller) << nl
+            << "# r [m]  (R-r)/dp [-]  eps [-]  deKlerk [-]  Mueller [-]"
+            << nl;
+    }
+    else
+    {
+        os  << "# r [m]  (R-r)/dp [-]  eps [-]" << nl;
+    }
+
+    forAll(r, k)
+    {
+        os  << r[k] << ' ' << zWall[k] << ' ' << eps[k];
+        if (sphereCorrelations)
+        {
+            os  << ' ' << deKlerk[k] << ' ' << mueller[k];
+        }
+        os  << nl;
+    }
+
+    os.precision(oldPrecision);
+}
+
+
+void Foam::rbd::bedVoidage::writeAxialProfile
+(
+    Ostream& os,
+    const label nBins
+) const
+{
+    const scalarField z(axialBinCentres(nBins));
+    const scalarField eps(axialProfile(nBins));
+
+    const int oldPrecision = os.precision(10);
+
+    os  << "# Axial void fraction: 1 - V_solid/V_slab for " << nBins
+        << " equal slabs" << nl
+        << "# tube radius R = " << R_ << " m, z from " << zLow_ << " to "
+        << zHigh_ << " m, pellets " << solids_.size() << nl
+        << "# bulk porosity " << bulkPorosity() << nl
+        << "# z [m] (slab centre)  eps [-]" << nl;
+
+    forAll(z, k)
+    {
+        os  << z[k] << ' ' << eps[k] << nl;
+    }
+
+    os.precision(oldPrecision);
+}
+
+
+void Foam::rbd::bedVoidage::write
+(
+    const fileName& dir,
+    const label nRadialBins,
+    const label nAxialBins,
+    const scalar dp,
+    const bool sphereCorrelations
+) const
+{
+    mkDir(dir);
+    {
+        OFstream os(dir/"radialPorosity.dat");
+        writeRadialProfile(os, nRadialBins, dp, sphereCorrelations);
+    }
+    {
+        OFstream os(dir/"axialPorosity.dat");
+        writeAxialProfile(os, nAxialBins);
+    }
+}
+
+
+// ************************************************************************* //
