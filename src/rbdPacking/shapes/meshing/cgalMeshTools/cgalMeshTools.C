@@ -12,6 +12,7 @@
 #include <CGAL/IO/STL.h>
 
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <numeric>
 #include <unordered_map>
@@ -588,7 +589,7 @@ bool Foam::rbd::cgalMeshTools::readSTL
     {
         ok = CGAL::IO::read_STL(is, pts, tris);
     }
-    catch (const std::exception& e)
+    catch (const std::exception&)
     {
         ok = false;
     }
@@ -608,6 +609,16 @@ bool Foam::rbd::cgalMeshTools::readSTL
     forAll(points, pi)
     {
         points[pi] = point(pts[pi].x(), pts[pi].y(), pts[pi].z());
+        for (const scalar x : points[pi])
+        {
+            if (!std::isfinite(x))
+            {
+                reason = "a vertex of " + file + " has a coordinate that is"
+                    " not a finite number";
+                points.clear();
+                return false;
+            }
+        }
     }
     faces.setSize(tris.size());
     forAll(faces, facei)

@@ -120,6 +120,22 @@ Foam::rbd::triMesh Foam::rbd::triMesh::transformed
 }
 
 
+Foam::tmp<Foam::pointField> Foam::rbd::triMesh::transformedPoints
+(
+    const tensor& R,
+    const vector& x
+) const
+{
+    tmp<pointField> tpts(new pointField(points_.size()));
+    pointField& pts = tpts.ref();
+    forAll(points_, i)
+    {
+        pts[i] = (R & points_[i]) + x;
+    }
+    return tpts;
+}
+
+
 void Foam::rbd::triMesh::transform(const tensor& R, const vector& x)
 {
     for (point& p : points_)

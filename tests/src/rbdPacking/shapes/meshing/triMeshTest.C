@@ -41,6 +41,9 @@ TEST(triMesh, transformRotatesThenTranslates)
         EXPECT_NEAR(mag(t.points()[i] - ((R & m.points()[i]) + x)), 0, 1e-15);
     }
 
+    const pointField tp(m.transformedPoints(R, x));
+    EXPECT_NEAR(max(mag(tp - t.points())), 0, 1e-15);
+
     rbd::triMesh f(m);
     f.flip();
     EXPECT_NEAR(f.volume(), -6, 1e-14);
