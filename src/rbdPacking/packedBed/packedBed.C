@@ -5,6 +5,7 @@
 #include "packedBed.H"
 #include "dictionaryChecks.H"
 #include "bedOutput.H"
+#include "correlations.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 
@@ -36,6 +37,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     axialBins_(100),
     cellsPerDiameter_(8),
     contactTreatment_("none"),
+    stlFormat_("ascii"),
     world_(),
     settled_(false),
     wallTime_(0),
@@ -63,7 +65,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     const scalar R = tube_.radius();
     const scalar N = tube_.diameter()/shape.volumeEquivalentDiameter();
     const scalar epsEstimate =
-        0.1504 + 0.2024/shape.sphericity() + 1.0814/sqr(N + 0.1226);
+        correlations::benyahiaONeill(N, shape.sphericity());
     const bool hasNumber = pelletsDict.found("number");
     const bool hasFill = pelletsDict.found("fillHeight");
     if (hasNumber == hasFill)
@@ -133,6 +135,10 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     (
         cfdDict, "contactTreatment", "none",
         {"none", "shrink", "bridges", "caps"}
+    );
+    stlFormat_ = getChoiceOrDefault
+    (
+        cfdDict, "stlFormat", "ascii", {"ascii", "binary"}
     );
 
     world_.reset
@@ -254,6 +260,7 @@ void Foam::rbd::packedBed::writeSettings(Ostream& os) const
     os.beginBlock("cfdCase");
     os.writeEntry("cellsPerDiameter", cellsPerDiameter_);
     os.writeEntry("contactTreatment", contactTreatment_);
+    os.writeEntry("stlFormat", stlFormat_);
     os.endBlock();
 
     const pelletShape& shape = shape_();
@@ -381,7 +388,7 @@ void Foam::rbd::packedBed::write() const
     bedOutput out(runTime_.path(), tube_, shape, w.bodies());
     out.writePellets();
     const scalar eps = out.writeProfiles(H, radialBins_, axialBins_);
-    out.writeSTL();
+    out.writeSTL(stlFormat_ == "binary");
 
     dictionary summary;
     summary.add("pellets", w.bodies().size());

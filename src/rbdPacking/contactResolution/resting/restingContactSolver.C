@@ -256,7 +256,7 @@ Foam::rbd::restingContactSolver::solve
     }
 
     // Pass 1: normal forces without friction
-    List<scalar> phiAll(contacts.size(), 0);
+    List<scalar> phiAll(contacts.size(), scalar(0));
     for (const label r : roots)
     {
         Eigen::VectorXd phi;

@@ -6,6 +6,10 @@
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "IOobject.H"
+#include "sphereSolidSet.H"
+#include "bedVoidage.H"
+#include "pelletMeshes.H"
+#include "stlIO.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -58,6 +62,58 @@ void Foam::rbd::bedOutput::writePellets() const
         }
     }
     commit(tmp, target);
+}
+
+
+Foam::scalar Foam::rbd::bedOutput::writeProfiles
+(
+    const scalar H,
+    const label radialBins,
+    const label axialBins
+) const
+{
+    if (!shape_.isSphere())
+    {
+        FatalErrorInFunction
+            << "Porosity profiles of '" << shape_.type() << "' pellets are "
+            << "not implemented yet" << exit(FatalError);
+    }
+
+    pointField centres(bodies_.size());
+    forAll(bodies_, i)
+    {
+        centres[i] = bodies_[i].x();
+    }
+    const sphereSolidSet spheres(centres, 0.5*shape_.diameter());
+    const bedVoidage voidage(spheres, tube_.radius(), H);
+
+    mkDir(dir_);
+    voidage.write(dir_, radialBins, axialBins, shape_.diameter(), true);
+
+    return voidage.bulkPorosity();
+}
+
+
+void Foam::rbd::bedOutput::writeSTL(const bool binary) const
+{
+    if (!shape_.isSphere())
+    {
+        FatalErrorInFunction
+            << "STL output of '" << shape_.type() << "' pellets is not "
+            << "implemented yet" << exit(FatalError);
+    }
+    const triMesh body(pelletMeshes::sphere(shape_.diameter(), shape_.faces()));
+
+    mkDir(stl_.path());
+    const fileName tmp(stl_ + ".tmp");
+    {
+        stlWriter writer(tmp, binary, "pellets");
+        for (const rigidBody& b : bodies_)
+        {
+            writer.write(body.transformed(b.R(), b.x()));
+        }
+    }
+    commit(tmp, stl_);
 }
 
 

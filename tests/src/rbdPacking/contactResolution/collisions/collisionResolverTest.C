@@ -12,7 +12,7 @@ namespace
 {
     const scalar a = 0.005;
     const scalar m = 4.2e-3;
-    const vector I(0.4*m*a*a, 0.4*m*a*a, 0.4*m*a*a);
+    const vector Ib(0.4*m*a*a, 0.4*m*a*a, 0.4*m*a*a);
 
     vector angularMomentum(const UList<rigidBody>& bs)
     {
@@ -49,16 +49,14 @@ TEST_P(twoSpheres, conserveMomentaAndObeyRestitutionLaw)
 
     for (int trial = 0; trial < 50; ++trial)
     {
-        List<rigidBody> bs
-        ({
-            rigidBody(m, I, point(0, 0, 0), quaternion(1), true),
-            rigidBody(2*m, 2*I, point(0, 0, 0), quaternion(1), true)
-        });
+        List<rigidBody> bs(2);
+        bs[0] = rigidBody(m, Ib, point(0, 0, 0), quaternion(1), true);
+        bs[1] = rigidBody(2*m, 2*Ib, point(0, 0, 0), quaternion(1), true);
         // Touching at a random direction, approaching, random spins
         vector n(U(rng), U(rng), U(rng));
         n /= mag(n);
-        bs[0].setState(2*a*n, quaternion(1), m*(-n + 0.3*vector(U(rng), U(rng), U(rng))), I.x()*vector(U(rng), U(rng), U(rng))*100);
-        bs[1].setState(point::zero, quaternion(1), 2*m*0.2*vector(U(rng), U(rng), U(rng)), 2*I.x()*vector(U(rng), U(rng), U(rng))*100);
+        bs[0].setState(2*a*n, quaternion(1), m*(-n + 0.3*vector(U(rng), U(rng), U(rng))), Ib.x()*vector(U(rng), U(rng), U(rng))*100);
+        bs[1].setState(point::zero, quaternion(1), 2*m*0.2*vector(U(rng), U(rng), U(rng)), 2*Ib.x()*vector(U(rng), U(rng), U(rng))*100);
 
         contact c;
         ASSERT_TRUE
@@ -122,7 +120,8 @@ TEST(collisionResolver, frictionNeverReversesSlipOnTheFloor)
 {
     // A sphere hitting the floor obliquely with high friction: the
     // tangential impulse stops the slip at most, never reverses it
-    List<rigidBody> bs({rigidBody(m, I, point(0, 0, a), quaternion(1), true)});
+    List<rigidBody> bs(1);
+    bs[0] = rigidBody(m, Ib, point(0, 0, a), quaternion(1), true);
     bs[0].setState(point(0, 0, a), quaternion(1), m*vector(0.2, 0, -1), Zero);
     tube t(1, 1, 5.0, 0.5);
     DynamicList<contact> cs;
