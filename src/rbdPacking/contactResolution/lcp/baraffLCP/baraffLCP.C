@@ -158,7 +158,7 @@ namespace
 Foam::rbd::baraffLCP::baraffLCP(const dictionary& coeffs)
 :
     lcpSolver(),
-    tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-10, "-")),
+    tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-9, "-")),
     pivotTolerance_
     (
         getPositiveOrDefault(coeffs, "pivotTolerance", 1e-10, "-")
@@ -225,9 +225,16 @@ Foam::rbd::lcpResult Foam::rbd::baraffLCP::solve
 
     while (!failed)
     {
-        // Fresh accelerations, against drift
-        a.noalias() = A*f;
-        a += b;
+        // Fresh accelerations, against drift; f is nonzero on C and the
+        // frozen contacts only, so O(n |C|)
+        a = b;
+        for (label i = 0; i < n; ++i)
+        {
+            if (f(i) != 0)
+            {
+                a += f(i)*A.col(i);
+            }
+        }
 
         // The contact to drive: most negative a outside C
         label d = -1;

@@ -106,6 +106,19 @@ TEST(lcpSolverDeath, rejectsMisspeltCoefficient)
 }
 
 
+TEST(lcpSolverDeath, rejectsInconsistentSizes)
+{
+    const autoPtr<rbd::lcpSolver> solver = rbd::lcpSolver::New(parse(""));
+    Vec f;
+    EXPECT_EXIT
+    (
+        solver->solve(Mat::Identity(3, 3), Vec::Ones(2), f),
+        ::testing::ExitedWithCode(1),
+        "LCP of inconsistent size: A is 3 x 3, b has 2 entries"
+    );
+}
+
+
 // * * * * * * * * * * * * * * * * Violation * * * * * * * * * * * * * * * //
 
 TEST(lcpSolver, violationMeasuresSignsAndComplementarity)
