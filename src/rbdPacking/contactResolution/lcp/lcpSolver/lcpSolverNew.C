@@ -1,0 +1,39 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "lcpSolver.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::rbd::lcpSolver> Foam::rbd::lcpSolver::New
+(
+    const dictionary& dict
+)
+{
+    const word solverType(dict.getOrDefault<word>("lcpSolver", "baraff"));
+
+    Info<< "Selecting LCP solver " << solverType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(solverType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "lcpSolver",
+            solverType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<lcpSolver>
+    (
+        cstrIter()(dict.subOrEmptyDict(solverType + "Coeffs"))
+    );
+}
+
+
+// ************************************************************************* //
