@@ -18,7 +18,8 @@
 #------------------------------------------------------------------------------
 set -u
 
-driver="${RBD_PACKING_DIR:?source etc/bashrc first}/build/tests/caseWritingDriver"
+: "${RBD_PACKING_DIR:?source etc/bashrc first}"
+driver="$RBD_PACKING_DIR/build/tests/caseWritingDriver"
 if [ ! -x "$driver" ]
 then
     echo "caseWritingEndToEnd: no $driver; run ./Allwmake first" 1>&2
@@ -50,7 +51,6 @@ run()
     end=$(date +%s.%N)
     awk -v n="$name" -v t="$start $end" \
         'BEGIN {split(t, a, " "); printf "    %-22s %6.1f s\n", n, a[2] - a[1]}'
-
 }
 
 total=$(date +%s.%N)
@@ -95,8 +95,8 @@ grep -q '^End' log.simpleFoam || fail "simpleFoam did not finish"
 run pressureDrop "$driver" compare .
 sed -n '/^Pressure drop/,$p' log.pressureDrop
 
-awk -v t="$total $(date +%s.%N)" \
-    'BEGIN {split(t, a, " "); printf "    %-22s %6.1f s\n", "total", a[2] - a[1]}'
+awk -v t="$total $(date +%s.%N)" 'BEGIN {split(t, a, " ");
+    printf "    %-22s %6.1f s\n", "total", a[2] - a[1]}'
 
 cd / && rm -rf "$work"
 echo "caseWritingEndToEnd: OK"
