@@ -1,0 +1,234 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "bedCaseSettings.H"
+#include "dictionaryChecks.H"
+
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::rbd::bedCaseSettings::contactTreatments
+({
+    "none",
+    "shrink"
+});
+
+
+const Foam::wordList Foam::rbd::bedCaseSettings::knownEntries
+({
+    "cellsPerDiameter",
+    "pelletLevel",
+    "wallLevel",
+    "inletLength",
+    "outletLength",
+    "contactTreatment",
+    "shrinkFactor",
+    "nu",
+    "Re",
+    "U",
+    "nIterations",
+    "nProcessors",
+    "overwrite"
+});
+
+
+namespace
+{
+    //- Geometry entries of the single-dictionary constructor
+    const Foam::wordList geometryEntries
+    ({
+        "tubeDiameter",
+        "pelletDiameter",
+        "bedHeight",
+        "floorCentre"
+    });
+
+    //- The options part of a dictionary that may also hold the geometry
+    Foam::dictionary withoutGeometry(const Foam::dictionary& dict)
+    {
+        Foam::dictionary options(dict);
+        for (const Foam::word& key : geometryEntries)
+        {
+            options.remove(key);
+        }
+        return options;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::rbd::bedCaseSettings::setGrid()
+{
+    if
+    (
+        !(tubeDiameter_ > 0) || !(pelletDiameter_ > 0) || !(bedHeight_ > 0)
+    )
+    {
+        FatalErrorInFunction
+            << "Bed geometry must be positive: tubeDiameter "
+            << tubeDiameter_ << ", pelletDiameter " << pelletDiameter_
+            << ", bedHeight " << bedHeight_ << " [m]" << exit(FatalError);
+    }
+    if (!(tubeDiameter_ > pelletDiameter_))
+    {
+        FatalErrorInFunction
+            << "The tube (diameter " << tubeDiameter_ << " m) must be wider"
+            << " than the pellets (" << pelletDiameter_ << " m)"
+            << exit(FatalError);
+    }
+
+    const scalar h = cellSize();
+    const scalar R = tubeRadius();
+
+    // Across: cells of size h, three whole cells between tube and box
+    const label nXY = 2*label(std::ceil(R/h + 3));
+    const scalar halfWidth = 0.5*nXY*h;
+
+    // Along z: the bed spans nBed + 1/2 cells, its bottom at 0.3 of a cell,
+    // its top at 0.8 of a cell. Dyadic refinement puts faces at k/2^l of a
+    // background cell; 0.3 and 0.8 stay >= 0.05 cells (0.2 cells of level 2)
+    // away from any of them, so the sampled planes never lie on a face.
+    const label nBed = max(label(0), label(std::round(bedHeight_/h - 0.5)));
+    const scalar dz = bedHeight_/(nBed + 0.5);
+    const label nBelow =
+        max(label(1), label(std::round(inletLengthRequested_/dz - 0.3)));
+    const label nAbove =
+        max(label(1), label(std::round(outletLengthRequested_/dz - 0.2)));
+
+    blockCells_ = labelVector(nXY, nXY, nBelow + nBed + 1 + nAbove);
+    blockMin_ = point
+    (
+        floorCentre_.x() - halfWidth,
+        floorCentre_.y() - halfWidth,
+        bedBottom() - (nBelow + 0.3)*dz
+    );
+    blockMax_ = point
+    (
+        floorCentre_.x() + halfWidth,
+        floorCentre_.y() + halfWidth,
+        blockMin_.z() + blockCells_.z()*dz
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::bedCaseSettings::bedCaseSettings
+(
+    const scalar tubeDiameter,
+    const scalar pelletDiameter,
+    const scalar bedHeight,
+    const point& floorCentre,
+    const dictionary& options
+)
+:
+    tubeDiameter_(tubeDiameter),
+    pelletDiameter_(pelletDiameter),
+    bedHeight_(bedHeight),
+    floorCentre_(floorCentre),
+    cellsPerDiameter_(getLabelOrDefault(options, "cellsPerDiameter", 8, 2)),
+    pelletLevel_(getLabelOrDefault(options, "pelletLevel", 1, 0)),
+    wallLevel_(getLabelOrDefault(options, "wallLevel", 0, 0)),
+    inletLengthRequested_
+    (
+        getPositiveOrDefault(options, "inletLength", 2*pelletDiameter, "m")
+    ),
+    outletLengthRequested_
+    (
+        getPositiveOrDefault(options, "outletLength", 3*pelletDiameter, "m")
+    ),
+    contactTreatment_
+    (
+        getChoiceOrDefault
+        (
+            options, "contactTreatment", "none", contactTreatments
+        )
+    ),
+    shrinkFactor_
+    (
+        getInRangeOrDefault(options, "shrinkFactor", 0.99, 0.5, 1, "-")
+    ),
+    nu_(getPositiveOrDefault(options, "nu", 1.5e-5, "m^2/s")),
+    velocity_(0),
+    nIterations_(getLabelOrDefault(options, "nIterations", 2000, 1)),
+    nProcessors_(getLabelOrDefault(options, "nProcessors", 2, 1)),
+    overwrite_(options.getOrDefault<bool>("overwrite", false)),
+    blockMin_(Zero),
+    blockMax_(Zero),
+    blockCells_(Zero)
+{
+    checkKnownEntries(options, knownEntries);
+
+    if (options.found("U"))
+    {
+        if (options.found("Re"))
+        {
+            badEntry
+            (
+                options, "U", options.get<scalar>("U"),
+                "either U [m/s] or Re [-], not both"
+            );
+        }
+        velocity_ = getPositive(options, "U", "m/s");
+    }
+    else
+    {
+        const scalar Re = getPositiveOrDefault(options, "Re", 1, "-");
+        velocity_ = Re*nu_/pelletDiameter_;
+    }
+
+    setGrid();
+}
+
+
+Foam::rbd::bedCaseSettings::bedCaseSettings(const dictionary& dict)
+:
+    bedCaseSettings
+    (
+        getPositive(dict, "tubeDiameter", "m"),
+        getPositive(dict, "pelletDiameter", "m"),
+        getPositive(dict, "bedHeight", "m"),
+        dict.getOrDefault<point>("floorCentre", Zero),
+        withoutGeometry(dict)
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::rbd::bedCaseSettings::pelletScale() const
+{
+    return contactTreatment_ == "shrink" ? shrinkFactor_ : 1;
+}
+
+
+void Foam::rbd::bedCaseSettings::write(Ostream& os) const
+{
+    os.writeEntry("tubeDiameter", tubeDiameter_);
+    os.writeEntry("pelletDiameter", pelletDiameter_);
+    os.writeEntry("bedHeight", bedHeight_);
+    os.writeEntry("floorCentre", floorCentre_);
+    os.writeEntry("cellsPerDiameter", cellsPerDiameter_);
+    os.writeEntry("pelletLevel", pelletLevel_);
+    os.writeEntry("wallLevel", wallLevel_);
+    os.writeEntry("inletLength", inletLength());
+    os.writeEntry("outletLength", outletLength());
+    os.writeEntry("contactTreatment", contactTreatment_);
+    if (contactTreatment_ == "shrink")
+    {
+        os.writeEntry("shrinkFactor", shrinkFactor_);
+    }
+    os.writeEntry("nu", nu_);
+    os.writeEntry("U", velocity_);
+    os.writeEntry("Re", reynoldsNumber());
+    os.writeEntry("nIterations", nIterations_);
+    os.writeEntry("nProcessors", nProcessors_);
+    os.writeEntry("overwrite", overwrite_);
+    os.writeEntry("blockMin", blockMin_);
+    os.writeEntry("blockMax", blockMax_);
+    os.writeEntry("blockCells", blockCells_);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,259 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "pressureDropComparison.H"
+#include "pressureDropCorrelations.H"
+#include "bedCaseWriter.H"
+#include "foamFile.H"
+#include "dictionaryChecks.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include "Pair.H"
+#include "mathematicalConstants.H"
+#include "dimensionedScalar.H"
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    //- z of the sampling plane of function object \c object in controlDict
+    scalar planeHeight(const dictionary& controlDict, const word& object)
+    {
+        const dictionary& planeDict =
+            controlDict.subDict("functions").subDict(object)
+           .subDict("sampledSurfaceDict").subDict("pointAndNormalDict");
+        const vector normal = planeDict.get<vector>("normal");
+        if (mag(normal ^ vector(0, 0, 1)) > 1e-6*mag(normal))
+        {
+            FatalIOErrorInFunction(planeDict)
+                << "The plane of " << object << " is not normal to the tube"
+                << " axis (z): normal " << normal << exit(FatalIOError);
+        }
+        return planeDict.get<point>("point").z();
+    }
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::Pair<Foam::scalar> Foam::rbd::pressureDropComparison::lastValue
+(
+    const fileName& caseDir,
+    const word& object
+)
+{
+    const fileName dir(caseDir/"postProcessing"/object);
+
+    // Newest start-time directory (a restart opens a new one)
+    fileName newest;
+    scalar newestTime = -GREAT;
+    for (const fileName& d : readDir(dir, fileName::DIRECTORY))
+    {
+        scalar t;
+        if (readScalar(d, t) && t > newestTime)
+        {
+            newestTime = t;
+            newest = d;
+        }
+    }
+
+    const fileName file(dir/newest/"surfaceFieldValue.dat");
+    IFstream is(file);
+    if (newest.empty() || !is.good())
+    {
+        FatalErrorInFunction
+            << "No output of function object " << object << ": cannot read "
+            << (newest.empty() ? dir : file) << nl
+            << "    run simpleFoam on the case first" << exit(FatalError);
+    }
+
+    std::string line, last;
+    while (is.good())
+    {
+        is.getLine(line);
+        const auto first = line.find_first_not_of(" \t");
+        if (first != std::string::npos && line[first] != '#')
+        {
+            last = line;
+        }
+    }
+
+    std::istringstream row(last);
+    double time, value;
+    if (!(row >> time >> value))
+    {
+        FatalErrorInFunction
+            << "No data row in " << file << exit(FatalError);
+    }
+    return Pair<scalar>(time, value);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::pressureDropComparison::pressureDropComparison
+(
+    const fileName& caseDir,
+    const word& shape
+)
+:
+    caseDir_(caseDir),
+    shape_(shape),
+    porosity_(0),
+    tubeDiameter_(0),
+    pelletDiameter_(0),
+    bedHeight_(0),
+    length_(0),
+    nu_(0),
+    rho_(0),
+    velocity_(0),
+    pBottom_(0),
+    pTop_(0)
+{
+    if (!pressureDropCorrelations::shapes.found(shape_))
+    {
+        FatalErrorInFunction
+            << "Unknown pellet shape '" << shape_ << "'; have "
+            << pressureDropCorrelations::shapes << exit(FatalError);
+    }
+
+    const dictionary summary
+    (
+        readFoamFile(caseDir_/"postProcessing/rbdPackBed/summary")
+    );
+    porosity_ = getInRangeOrDefault(summary, "bulkPorosity", -1, 0, 1, "-");
+    if (!(porosity_ > 0 && porosity_ < 1))
+    {
+        badEntry
+        (
+            summary, "bulkPorosity", porosity_, "a number in (0, 1)"
+        );
+    }
+    tubeDiameter_ = getPositive(summary, "tubeDiameter", "m");
+    pelletDiameter_ = getPositive(summary, "pelletDiameter", "m");
+    bedHeight_ = getPositive(summary, "bedHeight", "m");
+
+    const dictionary transport
+    (
+        readFoamFile(caseDir_/"constant/transportProperties")
+    );
+    nu_ = dimensionedScalar("nu", dimArea/dimTime, transport).value();
+    if (transport.found("rho"))
+    {
+        rho_ = dimensionedScalar("rho", dimMass/dimVolume, transport).value();
+    }
+
+    const dictionary control(readFoamFile(caseDir_/"system/controlDict"));
+    const scalar zBottom =
+        planeHeight(control, bedCaseWriter::bedBottomObject);
+    const scalar zTop = planeHeight(control, bedCaseWriter::bedTopObject);
+    length_ = zTop - zBottom;
+    if (!(length_ > 0))
+    {
+        FatalIOErrorInFunction(control)
+            << "The plane of " << bedCaseWriter::bedTopObject
+            << " must lie above that of " << bedCaseWriter::bedBottomObject
+            << exit(FatalIOError);
+    }
+    if (mag(length_ - bedHeight_) > 0.01*bedHeight_)
+    {
+        WarningInFunction
+            << "Sampling planes " << length_ << " m apart, bed height "
+            << bedHeight_ << " m" << endl;
+    }
+
+    const scalar area =
+        0.25*constant::mathematical::pi*sqr(tubeDiameter_);
+    velocity_ = mag(lastValue(caseDir_, bedCaseWriter::flowRateObject)[1])
+       /area;
+    pBottom_ = lastValue(caseDir_, bedCaseWriter::bedBottomObject)[1];
+    pTop_ = lastValue(caseDir_, bedCaseWriter::bedTopObject)[1];
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::rbd::pressureDropComparison::ergun() const
+{
+    return pressureDropCorrelations::ergun
+    (
+        porosity_, pelletDiameter_, velocity_, nu_, 1
+    );
+}
+
+
+Foam::scalar Foam::rbd::pressureDropComparison::eisfeldSchnitzlein() const
+{
+    return pressureDropCorrelations::eisfeldSchnitzlein
+    (
+        porosity_, pelletDiameter_, tubeDiameter_, velocity_, nu_, 1, shape_
+    );
+}
+
+
+Foam::dictionary Foam::rbd::pressureDropComparison::results() const
+{
+    dictionary d;
+    d.add("shape", shape_);
+    d.add("bulkPorosity", porosity_);
+    d.add("tubeDiameter", tubeDiameter_);
+    d.add("pelletDiameter", pelletDiameter_);
+    d.add("bedHeight", bedHeight_);
+    d.add("planeDistance", length_);
+    d.add("nu", nu_);
+    d.add("superficialVelocity", velocity_);
+    d.add("Re", reynoldsNumber());
+    d.add("pBottom", pBottom_);
+    d.add("pTop", pTop_);
+    d.add("dPdLSimulated", simulated());
+    d.add("dPdLErgun", ergun());
+    d.add("dPdLEisfeldSchnitzlein", eisfeldSchnitzlein());
+    d.add("ratioErgun", simulated()/ergun());
+    d.add("ratioEisfeldSchnitzlein", simulated()/eisfeldSchnitzlein());
+    if (rho_ > 0)
+    {
+        d.add("rho", rho_);
+        d.add("dPdLSimulatedPa", rho_*simulated());
+    }
+    return d;
+}
+
+
+void Foam::rbd::pressureDropComparison::report(Ostream& os) const
+{
+    os  << "Pressure drop over the packed section (" << shape_
+        << ", porosity " << porosity_ << ", L = " << length_ << " m,"
+        << " U = " << velocity_ << " m/s, Re_p = " << reynoldsNumber()
+        << ")" << nl
+        << "    dP/(rho L) [m/s^2]" << nl
+        << "        simulated             " << simulated() << nl
+        << "        Ergun                 " << ergun()
+        << "  (simulated/Ergun " << simulated()/ergun() << ")" << nl
+        << "        Eisfeld-Schnitzlein   " << eisfeldSchnitzlein()
+        << "  (simulated/E-S " << simulated()/eisfeldSchnitzlein() << ")"
+        << nl;
+    if (rho_ > 0)
+    {
+        os  << "    dP/L simulated [Pa/m]     " << rho_*simulated() << nl;
+    }
+}
+
+
+Foam::fileName Foam::rbd::pressureDropComparison::writeFile() const
+{
+    const fileName file(caseDir_/"postProcessing/pressureDrop/comparison");
+    writeFoamFile
+    (
+        file, "dictionary", results(),
+        "dPdL*: dP/(rho L) [m/s^2] over the packed section;"
+        " correlations in kinematic form"
+    );
+    return file;
+}
+
+
+// ************************************************************************* //

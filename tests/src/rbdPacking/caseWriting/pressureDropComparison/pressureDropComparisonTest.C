@@ -1,0 +1,155 @@
+// Unit tests for src/rbdPacking/caseWriting/pressureDropComparison: a case
+// written by bedCaseWriter, with a hand-written summary and hand-written
+// function-object output
+
+#include <gtest/gtest.h>
+#include "pressureDropComparison.H"
+#include "pressureDropCorrelations.H"
+#include "bedCaseWriter.H"
+#include "foamFile.H"
+#include "OFstream.H"
+#include "mathematicalConstants.H"
+#include "rbdPacking/caseWriting/caseWritingTempDir.H"
+
+using namespace Foam;
+
+namespace
+{
+    const scalar dp = 0.01, D = 0.04, H = 0.05, eps = 0.45, nu = 1e-5;
+
+    //- A surfaceFieldValue.dat as v1912 writes it
+    void writeDat
+    (
+        const fileName& caseDir,
+        const word& object,
+        const word& startTime,
+        const word& column,
+        const List<scalar>& values
+    )
+    {
+        const fileName file
+        (
+            caseDir/"postProcessing"/object/startTime/"surfaceFieldValue.dat"
+        );
+        mkDir(file.path());
+        OFstream os(file);
+        os.precision(10);
+        os  << "# Region type : patch inlet" << nl
+            << "# Faces         : 812" << nl
+            << "# Time          \t" << column << nl;
+        forAll(values, i)
+        {
+            os  << i + 1 << "               \t" << values[i] << nl;
+        }
+    }
+
+    //- The case: dictionaries by bedCaseWriter, summary and output by hand
+    void writeCase(const fileName& caseDir)
+    {
+        const rbd::bedCaseSettings s
+        (
+            D, dp, H, point::zero,
+            rbd::parseDictionary("nu 1e-5;")
+        );
+        rbd::bedCaseWriter(caseDir, s, [](const point&) { return false; })
+            .write();
+
+        rbd::writeFoamFile
+        (
+            caseDir/"postProcessing/rbdPackBed/summary", "dictionary",
+            "bulkPorosity 0.45; tubeDiameter 0.04; pelletDiameter 0.01;"
+            " bedHeight 0.05; porosityHeight 0.04;"
+        );
+
+        // An old run from 0, the newest from 100: the newest counts
+        writeDat(caseDir, "flowRate", "0", "sum(phi)", {-1, -1});
+        writeDat(caseDir, "pBedBottom", "0", "areaAverage(p)", {9, 9});
+        writeDat(caseDir, "pBedTop", "0", "areaAverage(p)", {1, 1});
+        writeDat
+        (
+            caseDir, "flowRate", "100", "sum(phi)", {-2e-6, -1.25e-6}
+        );
+        writeDat
+        (
+            caseDir, "pBedBottom", "100", "areaAverage(p)", {0.3, 0.2}
+        );
+        writeDat(caseDir, "pBedTop", "100", "areaAverage(p)", {0.02, 0.01});
+    }
+}
+
+
+TEST(pressureDropComparison, readsTheCaseAndComparesWithCorrelations)
+{
+    const caseWritingTest::tempDir tmp;
+    writeCase(tmp.path());
+
+    const rbd::pressureDropComparison c(tmp.path());
+    const scalar U = 1.25e-6/(0.25*constant::mathematical::pi*sqr(D));
+    EXPECT_DOUBLE_EQ(c.porosity(), eps);
+    EXPECT_NEAR(c.length(), H, 1e-12);
+    EXPECT_NEAR(c.superficialVelocity(), U, 1e-15);
+    EXPECT_NEAR(c.reynoldsNumber(), U*dp/nu, 1e-12);
+    EXPECT_NEAR(c.simulated(), (0.2 - 0.01)/H, 1e-12);
+    EXPECT_NEAR
+    (
+        c.ergun(),
+        rbd::pressureDropCorrelations::ergun(eps, dp, U, nu, 1), 1e-12
+    );
+    EXPECT_NEAR
+    (
+        c.eisfeldSchnitzlein(),
+        rbd::pressureDropCorrelations::eisfeldSchnitzlein
+        (
+            eps, dp, D, U, nu, 1, "spheres"
+        ),
+        1e-12
+    );
+
+    const fileName file = c.writeFile();
+    const dictionary d(rbd::readFoamFile(file));
+    EXPECT_NEAR(d.get<scalar>("dPdLSimulated"), c.simulated(), 1e-9);
+    EXPECT_NEAR
+    (
+        d.get<scalar>("ratioErgun"), c.simulated()/c.ergun(), 1e-9
+    );
+    EXPECT_FALSE(d.found("dPdLSimulatedPa"));
+}
+
+
+TEST(pressureDropComparison, lastValueOfNewestRun)
+{
+    const caseWritingTest::tempDir tmp;
+    writeCase(tmp.path());
+    const Pair<scalar> last =
+        rbd::pressureDropComparison::lastValue(tmp.path(), "pBedBottom");
+    EXPECT_EQ(last[0], 2);
+    EXPECT_EQ(last[1], 0.2);
+}
+
+
+TEST(pressureDropComparisonDeath, stopsWithoutSimulationOutput)
+{
+    const caseWritingTest::tempDir tmp;
+    writeCase(tmp.path());
+    rmDir(tmp.path()/"postProcessing/pBedTop");
+    EXPECT_EXIT
+    (
+        rbd::pressureDropComparison(tmp.path()).simulated(),
+        ::testing::ExitedWithCode(1),
+        "No output of function object pBedTop"
+    );
+}
+
+
+TEST(pressureDropComparisonDeath, stopsWithoutSummary)
+{
+    const caseWritingTest::tempDir tmp;
+    writeCase(tmp.path());
+    rm(tmp.path()/"postProcessing/rbdPackBed/summary");
+    EXPECT_EXIT
+    (
+        rbd::pressureDropComparison(tmp.path()).simulated(),
+        ::testing::ExitedWithCode(1),
+        "Cannot read .*summary"
+    );
+}
