@@ -30,7 +30,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     number_(0),
     fillHeight_(0),
     rotates_(true),
-    loading_(dict.subOrEmptyDict("loading"), tube_, shape_()),
+    loading_(),
     controls_(dict.subOrEmptyDict("simulation")),
     porosityHeight_(-1),
     radialBins_(100),
@@ -59,6 +59,11 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
           + ", diameter " + Foam::name(shape.diameter()) + ")"
         );
     }
+
+    loading_.reset
+    (
+        new loadingScheme(dict.subOrEmptyDict("loading"), tube_, shape)
+    );
 
     // How many pellets: 'number', or 'fillHeight' with the porosity
     // estimated by Benyahia and O'Neill's correlation for any shape
@@ -157,12 +162,12 @@ Foam::label Foam::rbd::packedBed::releasePellets
 )
 {
     const UList<rigidBody>& bodies = world_->bodies();
-    const scalar clearance = loading_.clearance();
+    const scalar clearance = loading_->clearance();
     const scalar rb = shape_->boundingRadius();
 
-    for (label c = 0; c < loading_.nColumns() && released < number_; ++c)
+    for (label c = 0; c < loading_->nColumns() && released < number_; ++c)
     {
-        const point& slot = loading_.column(c);
+        const point& slot = loading_->column(c);
         if
         (
             lastOfColumn[c] >= 0
@@ -174,12 +179,12 @@ Foam::label Foam::rbd::packedBed::releasePellets
 
         point x;
         quaternion q;
-        loading_.nextPose(c, x, q);
+        loading_->nextPose(c, x, q);
 
         // Nothing else may overlap the release point: the recent pellets
         // are the only ones up there
         bool free = true;
-        const label first = max(0, bodies.size() - 8*loading_.nColumns());
+        const label first = max(0, bodies.size() - 8*loading_->nColumns());
         for (label i = first; i < bodies.size(); ++i)
         {
             if (mag(bodies[i].x() - x) < 2*rb + world_->band())
@@ -236,7 +241,7 @@ void Foam::rbd::packedBed::writeSettings(Ostream& os) const
     os.endBlock();
 
     os.beginBlock("loading");
-    loading_.write(os);
+    loading_->write(os);
     os.endBlock();
 
     os.beginBlock("simulation");
@@ -286,7 +291,7 @@ void Foam::rbd::packedBed::run()
     const scalar Eref = number_*mass*ctrl.gravity*shape.diameter();
     const scalar moving = ctrl.restingVelocity;
 
-    labelList lastOfColumn(loading_.nColumns(), -1);
+    labelList lastOfColumn(loading_->nColumns(), -1);
     label released = 0;
     scalar quietTime = 0;
     scalar nextLog = 0;

@@ -105,7 +105,8 @@ Foam::rbd::collisionResolver::resolve
             const vector vRel(relativeVelocity(c, bodies, fixed));
             const scalar vn = vRel & c.n;
 
-            if (vn >= 0)
+            // Approach slower than a millionth of eps_p is round-off
+            if (vn >= -1e-6*epsP_)
             {
                 continue;
             }

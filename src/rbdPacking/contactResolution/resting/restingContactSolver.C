@@ -225,15 +225,39 @@ Foam::rbd::restingContactSolver::solve
         for (label a = 0; a < n; ++a)
         {
             const contact& c = contacts[cs[a]];
-            const vector aRel(relativeAcceleration(c, bodies, fixed, Fb, tb));
             const vector vRel
             (
                 collisionResolver::relativeVelocity(c, bodies, fixed)
             );
             const scalar vn = vRel & c.n;
-            B(a) =
-                (c.n & aRel) + 2*(c.nDot & vRel)
-              + 2*(max(c.gap, scalar(0)) + h*vn)/sqr(h);
+            scalar ddGap;
+            if (c.centreBased)
+            {
+                // Gap between centres (spheres): the linear part n . (a_i -
+                // a_k) of d''. The curvature part n' . (v_i - v_k) is left
+                // out on purpose: with it, a pellet sliding along the
+                // concave tube wall would let the wall force do positive
+                // work; without it the work of every contact force over a
+                // step is -phi max(d, 0) <= 0 (see the header). Its
+                // geometric error, h^2 |v_t|^2/(2 rho) per step, is left to
+                // the overlap correction.
+                vector aC(bodies[c.i].invMass()*Fb[c.i]);
+                if (c.k >= 0 && !fixed[c.k])
+                {
+                    aC -= bodies[c.k].invMass()*Fb[c.k];
+                }
+                ddGap = (c.n & aC);
+            }
+            else
+            {
+                // Material contact points (eq 28)
+                const vector aRel
+                (
+                    relativeAcceleration(c, bodies, fixed, Fb, tb)
+                );
+                ddGap = (c.n & aRel) + 2*(c.nDot & vRel);
+            }
+            B(a) = ddGap + 2*(max(c.gap, scalar(0)) + h*vn)/sqr(h);
         }
 
         phi.resize(n);

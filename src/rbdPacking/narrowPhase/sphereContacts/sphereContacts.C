@@ -37,6 +37,7 @@ bool Foam::rbd::sphereContacts::sphereSphere
     c.gap = dist - ai - ak;
     c.p = bk.x() + (ak + 0.5*c.gap)*n;
     c.nDot = (dv - n*(n & dv))/dist;
+    c.centreBased = true;
 
     return true;
 }
@@ -65,6 +66,7 @@ void Foam::rbd::sphereContacts::sphereTube
         c.gap = zGap;
         c.p = point(x.x(), x.y(), 0.5*zGap);
         c.nDot = Zero;
+        c.centreBased = true;
         c.e = container.restitution();
         c.mu = container.friction();
         contacts.append(c);
@@ -85,6 +87,7 @@ void Foam::rbd::sphereContacts::sphereTube
         c.gap = rGap;
         c.p = (rho + a + 0.5*rGap)*er + vector(0, 0, x.z());
         c.nDot = -(vh - er*(er & vh))/rho;
+        c.centreBased = true;
         c.e = container.restitution();
         c.mu = container.friction();
         contacts.append(c);

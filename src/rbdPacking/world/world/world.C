@@ -47,7 +47,7 @@ Foam::rbd::world::world
     rb_(shape.boundingRadius()),
     band_(controls.proximity*shape.boundingRadius()),
     touch_(controls.contactTolerance*shape.diameter()),
-    slop_(0.1*controls.contactTolerance*shape.diameter()),
+    slop_(controls.contactTolerance*shape.diameter()),
     bodies_(),
     fixed_(),
     slowTime_(),
@@ -184,7 +184,12 @@ void Foam::rbd::world::projectOverlaps()
         return mag(xi - bodies_[c.k].x()) - 2*a;
     };
 
-    for (label sweep = 0; sweep < 4; ++sweep)
+    // Gauss-Seidel sweeps until no interpenetration exceeds the slop; each
+    // correction leaves half the slop, so that a jammed set of contacts
+    // (a column wedged between neighbours and the wall) settles at
+    // corrections below the slop instead of pushing back and forth
+    const label maxSweeps = 50;
+    for (label sweep = 0; sweep < maxSweeps; ++sweep)
     {
         bool moved = false;
         for (contact& c : contacts_)
@@ -201,13 +206,14 @@ void Foam::rbd::world::projectOverlaps()
             {
                 continue;
             }
-            const vector dx((-c.gap/(wi + wk))*c.n);
+            const scalar depth = -c.gap - 0.5*slop_;
+            const vector dx((depth/(wi + wk))*c.n);
             bodies_[c.i].displace(wi*dx);
             if (wk > 0)
             {
                 bodies_[c.k].displace(-wk*dx);
             }
-            c.gap = 0;
+            c.gap = -0.5*slop_;
             moved = true;
             ++stats_.projections;
         }
@@ -247,7 +253,14 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
               & c.n;
             if (vn < -epsP)
             {
+                // Colliding soon: stop at the touching gap, gravity counted
                 h = min(h, timeToCover(g, -vn, c.gap - 0.5*touch_));
+            }
+            else if (vn < 0)
+            {
+                // Resting approach: the resting-contact solve holds the
+                // acceleration, the step bounds the closing velocity
+                h = min(h, (c.gap - 0.5*touch_)/(-vn));
             }
         }
     }
@@ -299,6 +312,7 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     // 3. Residual interpenetration
     projectOverlaps();
 
+
     // Sleeping bodies hit by a collision wake up first
     bool woke = false;
     for (const contact& c : contacts_)
@@ -337,21 +351,14 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     // 5. Step length
     const scalar h = chooseStep(hMax);
 
-    // 6. Resting contacts: slow, and able to touch within h
+    // 6. Contact forces. Every contact within the band takes part: the
+    //    constraint of a separating or distant contact is inactive unless
+    //    the forces of its neighbours would drive it into interpenetration
+    //    within the step, which is exactly when it must act.
     restingList_.clear();
     forAll(contacts_, ci)
     {
-        const contact& c = contacts_[ci];
-        const scalar vn =
-            collisionResolver::relativeVelocity(c, bodies_, fixed_) & c.n;
-        if
-        (
-            mag(vn) <= epsP
-         && c.gap <= touch_ + mag(vn)*h + g*sqr(h)
-        )
-        {
-            restingList_.append(ci);
-        }
+        restingList_.append(ci);
     }
 
     F_.setSize(bodies_.size());

@@ -28,6 +28,7 @@ TEST(neighbourList, gridFindsExactlyTheBruteForcePairs)
     std::mt19937 rng(3);
     for (const scalar side : {0.05, 0.2, 1.0})
     {
+        const scalar cutoff = 0.011*side/0.05;
         std::uniform_real_distribution<double> U(-side, side);
         pointField x(2000);
         for (point& p : x)
@@ -35,8 +36,8 @@ TEST(neighbourList, gridFindsExactlyTheBruteForcePairs)
             p = point(U(rng), U(rng), U(rng) + 0.5*side);
         }
         DynamicList<labelPair> grid, brute;
-        neighbourList::gridPairs(x, 0.011, grid);
-        neighbourList::bruteForce(x, 0.011, brute);
+        neighbourList::gridPairs(x, cutoff, grid);
+        neighbourList::bruteForce(x, cutoff, brute);
         EXPECT_EQ(sorted(grid), sorted(brute));
         EXPECT_GT(brute.size(), 0);
     }
