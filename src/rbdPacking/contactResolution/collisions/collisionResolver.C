@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "collisionResolver.H"
+#include "DynamicList.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -89,24 +90,33 @@ Foam::rbd::collisionResolver::resolve
 {
     result res;
 
+    // The touching contacts of moving bodies
+    DynamicList<label> touching(contacts.size());
+    forAll(contacts, ci)
+    {
+        if (contacts[ci].gap <= touchGap && !fixed[contacts[ci].i])
+        {
+            touching.append(ci);
+        }
+    }
+
+    // An approach slower than this is left to the resting-contact solve,
+    // which stops it within the step without interpenetration
+    const scalar vSlow = 1e-3*epsP_;
+
     for (label sweep = 0; sweep < maxSweeps_; ++sweep)
     {
         const bool withRestitution = sweep < restitutionSweeps_;
         bool applied = false;
         res.residual = 0;
 
-        for (const contact& c : contacts)
+        for (const label ci : touching)
         {
-            if (c.gap > touchGap || fixed[c.i])
-            {
-                continue;
-            }
-
+            const contact& c = contacts[ci];
             const vector vRel(relativeVelocity(c, bodies, fixed));
             const scalar vn = vRel & c.n;
 
-            // Approach slower than a millionth of eps_p is round-off
-            if (vn >= -1e-6*epsP_)
+            if (vn >= -vSlow)
             {
                 continue;
             }
