@@ -26,6 +26,18 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
     dict(d)
 {
+    checkKnownEntries
+    (
+        d,
+        {
+            "deltaT", "endTime", "gravity", "restingVelocity",
+            "slipVelocity", "proximity", "contactTolerance",
+            "restitutionSweeps", "maxSweeps", "sleepVelocity", "sleepTime",
+            "settleTime", "settleEnergy", "logInterval", "lcpSolver",
+            "baraffCoeffs", "projectedGaussSeidelCoeffs", "enumerationCoeffs"
+        }
+    );
+
     if (proximity > 1)
     {
         badEntry(d, "proximity", proximity, "a number in (0, 1] [-]");

@@ -1,0 +1,72 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# rbdPackBed on a small sphere bed: the outputs exist and are well formed,
+# the summary is an OpenFOAM dictionary, the STL is one closed surface, the
+# same dictionary and seed give the same packing, and -dict reads another
+# dictionary.
+#------------------------------------------------------------------------------
+set -u
+here="$(cd "$(dirname "$0")" && pwd)"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
+
+cp -r "$here/cases/smallSpheres" "$tmp/a"
+cp -r "$here/cases/smallSpheres" "$tmp/b"
+
+rbdPackBed -case "$tmp/a" > "$tmp/a.log" 2>&1
+check "exit status 0" "[ $? -eq 0 ]"
+out="$tmp/a/postProcessing/rbdPackBed"
+check "summary, pellets.csv, profiles and STL written" \
+    "[ -s $out/summary ] && [ -s $out/pellets.csv ] && [ -s $out/radialPorosity.dat ] && [ -s $out/axialPorosity.dat ] && [ -s $tmp/a/constant/triSurface/pellets.stl ]"
+check "log echoes effective settings with defaults" \
+    "grep -q 'restingVelocity' $tmp/a.log && grep -q 'Selecting LCP solver baraff' $tmp/a.log"
+check "log ends with End" "tail -3 $tmp/a.log | grep -q '^End'"
+
+n="$(foamDictionary -entry pellets -value "$out/summary" 2>/dev/null)"
+check "summary: 20 pellets (foamDictionary reads it)" "[ \"$n\" = 20 ]"
+for key in shape tubeDiameter pelletDiameter bulkPorosity porosityHeight bedHeight maxOverlap simulatedTime wallTime steps settled
+do
+    check "summary has $key" "foamDictionary -entry $key -value $out/summary >/dev/null 2>&1"
+done
+check "settled" "[ \"$(foamDictionary -entry settled -value $out/summary 2>/dev/null)\" = true ]"
+eps="$(foamDictionary -entry bulkPorosity -value "$out/summary" 2>/dev/null)"
+check "bulk porosity $eps in (0.3, 0.8)" "awk -v e=$eps 'BEGIN {exit !(e > 0.3 && e < 0.8)}'"
+ov="$(foamDictionary -entry maxOverlap -value "$out/summary" 2>/dev/null)"
+check "max overlap $ov below 0.1 % of dp" "awk -v o=$ov 'BEGIN {exit !(o < 1e-5)}'"
+
+check "pellets.csv header" "[ \"\$(head -1 $out/pellets.csv)\" = 'id,shape,x,y,z,qw,qx,qy,qz' ]"
+check "pellets.csv has 20 rows" "[ \$(tail -n +2 $out/pellets.csv | wc -l) -eq 20 ]"
+check "every pellet inside the tube" \
+    "awk -F, 'NR > 1 && (sqrt(\$3*\$3 + \$4*\$4) > 0.015 + 1e-6 || \$5 < 0.005 - 1e-6) {bad=1} END {exit bad}' $out/pellets.csv"
+check "unit quaternions" \
+    "awk -F, 'NR > 1 {q=\$6*\$6+\$7*\$7+\$8*\$8+\$9*\$9; if (q < 1-1e-9 || q > 1+1e-9) bad=1} END {exit bad}' $out/pellets.csv"
+
+if command -v surfaceCheck >/dev/null 2>&1
+then
+    surfaceCheck "$tmp/a/constant/triSurface/pellets.stl" > "$tmp/sc.log" 2>&1
+    check "pellets.stl is closed (surfaceCheck)" "grep -q 'Surface is closed' $tmp/sc.log"
+    check "pellets.stl has 20 parts" "grep -Eq 'Number of (unconnected parts|zones \(connected area with consistent normal\)) *: *20' $tmp/sc.log"
+fi
+
+# Same dictionary, same seed: the same packing, bit for bit
+rbdPackBed -case "$tmp/b" > "$tmp/b.log" 2>&1
+check "same seed, same pellets.csv" "cmp -s $out/pellets.csv $tmp/b/postProcessing/rbdPackBed/pellets.csv"
+
+# Another seed: another packing
+cp -r "$here/cases/smallSpheres" "$tmp/c"
+foamDictionary "$tmp/c/system/packingDict" -entry loading/seed -set 2 >/dev/null
+rbdPackBed -case "$tmp/c" > "$tmp/c.log" 2>&1
+check "another seed, another packing" "! cmp -s $out/pellets.csv $tmp/c/postProcessing/rbdPackBed/pellets.csv"
+
+# -dict: a dictionary elsewhere
+mkdir -p "$tmp/d/system"
+cp "$here/cases/smallSpheres/system/packingDict" "$tmp/otherDict"
+rbdPackBed -case "$tmp/d" -dict "$tmp/otherDict" > "$tmp/d.log" 2>&1
+check "-dict reads another dictionary" "[ \$? -eq 0 ] && cmp -s $out/pellets.csv $tmp/d/postProcessing/rbdPackBed/pellets.csv"
+
+rbdPackBed -help > "$tmp/help.log" 2>&1
+check "-help lists -dict and -case" "grep -q -- '-dict' $tmp/help.log && grep -q -- '-case' $tmp/help.log"
+
+exit $fail
