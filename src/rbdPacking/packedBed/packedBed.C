@@ -344,6 +344,7 @@ void Foam::rbd::packedBed::run()
         {
             Info<< "Time = " << w.time() << " s  pellets " << released
                 << '/' << number_ << "  moving " << w.nMoving(moving)
+                << "  sleeping " << w.nSleeping()
                 << "  KE = " << KE << " J  steps " << w.stats().steps
                 << "  maxOverlap " << w.stats().maxOverlap << " m"
                 << "  ExecutionTime = " << timer.elapsedTime() << " s"

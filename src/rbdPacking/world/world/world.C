@@ -428,6 +428,17 @@ Foam::label Foam::rbd::world::nMoving(const scalar speed) const
 }
 
 
+Foam::label Foam::rbd::world::nSleeping() const
+{
+    label n = 0;
+    for (const bool f : fixed_)
+    {
+        n += f;
+    }
+    return n;
+}
+
+
 Foam::scalar Foam::rbd::world::kineticEnergy() const
 {
     scalar E = 0;
