@@ -27,6 +27,42 @@ case "$1" in
     sed)    sed -i "${action#sed }" "$dict" ;;
     nocase) caseArg="$tmp/doesNotExist" ;;
     nodict) rm "$dict" ;;
+    stl)    # an STL pellet: 'none' (no file) or 'open' (a tetrahedron
+            # missing one face)
+            foamDictionary "$dict" -entry pellets/shape -set stl >/dev/null 2>&1
+            foamDictionary "$dict" -entry pellets/diameter -remove >/dev/null 2>&1
+            foamDictionary "$dict" -entry pellets/faces -remove >/dev/null 2>&1
+            foamDictionary "$dict" -entry pellets/file -add '"constant/pellet.stl"' >/dev/null 2>&1
+            foamDictionary "$dict" -entry pellets/scale -add 0.01 >/dev/null 2>&1
+            if [ "$2" = open ]
+            then
+                mkdir -p "$tmp/case/constant"
+                cat > "$tmp/case/constant/pellet.stl" <<'STL'
+solid open
+facet normal 0 0 -1
+outer loop
+vertex 0 0 0
+vertex 0 1 0
+vertex 1 0 0
+endloop
+endfacet
+facet normal 0 -1 0
+outer loop
+vertex 0 0 0
+vertex 1 0 0
+vertex 0 0 1
+endloop
+endfacet
+facet normal -1 0 0
+outer loop
+vertex 0 0 0
+vertex 0 0 1
+vertex 0 1 0
+endloop
+endfacet
+endsolid open
+STL
+            fi ;;
     *)      echo "unknown action '$1'"; exit 2 ;;
 esac
 

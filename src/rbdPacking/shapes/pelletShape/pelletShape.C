@@ -32,7 +32,12 @@ Foam::rbd::pelletShape::pelletShape
     const label defaultFaces
 )
 :
-    faces_(getLabelOrDefault(dict, "faces", defaultFaces, 20))
+    faces_
+    (
+        dict.found("faces")
+      ? getLabelOrDefault(dict, "faces", defaultFaces, 20)
+      : defaultFaces
+    )
 {}
 
 

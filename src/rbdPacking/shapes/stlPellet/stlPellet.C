@@ -1,0 +1,81 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "stlPellet.H"
+#include "dictionaryChecks.H"
+#include "stlIO.H"
+#include "massProperties.H"
+#include "OSspecific.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace rbd
+{
+    defineTypeNameAndDebug(stlPellet, 0);
+    addToRunTimeSelectionTable(pelletShape, stlPellet, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
+:
+    pelletShape(dict, 0),
+    file_(dict.get<fileName>("file")),
+    scale_(getPositiveOrDefault(dict, "scale", 1, "-")),
+    mesh_(),
+    volume_(0),
+    inertia_(Zero)
+{
+    checkEntries(dict, {"file", "scale"});
+
+    // Relative paths are relative to the case directory
+    fileName path(file_);
+    path.expand();
+    if (!path.isAbsolute() && !getEnv("FOAM_CASE").empty())
+    {
+        path = fileName(getEnv("FOAM_CASE"))/path;
+    }
+
+    triMesh surface;
+    string reason;
+    if (!readSTL(path, scale_, surface, reason))
+    {
+        badEntry
+        (
+            dict, "file", file_,
+            "a closed, outward-oriented STL surface (" + path + ": "
+          + reason + ")"
+        );
+    }
+
+    const massProperties mp(surface, 1);
+    mesh_ = mp.toPrincipalFrame(surface);
+    volume_ = mp.volume();
+    inertia_ = mp.principalMoments();
+    if (faces_ == 0)
+    {
+        faces_ = mesh_.nFaces();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::rbd::stlPellet::write(Ostream& os) const
+{
+    pelletShape::write(os);
+    os.writeEntry("file", file_);
+    os.writeEntry("scale", scale_);
+    os.writeKeyword("mesh") << mesh_.nFaces() << " faces, volume "
+        << volume_ << " m^3, bounding radius " << boundingRadius() << " m"
+        << token::END_STATEMENT << nl;
+}
+
+
+// ************************************************************************* //
