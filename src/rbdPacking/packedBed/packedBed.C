@@ -8,6 +8,8 @@
 #include "correlations.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
+#include "boundBox.H"
+#include <memory>
 
 using Foam::constant::mathematical::pi;
 
@@ -35,9 +37,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     porosityHeight_(-1),
     radialBins_(100),
     axialBins_(100),
-    cellsPerDiameter_(8),
-    contactTreatment_("none"),
-    stlFormat_("ascii"),
+    caseSettings_(),
     world_(),
     settled_(false),
     wallTime_(0),
@@ -133,17 +133,17 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     radialBins_ = getLabelOrDefault(analysisDict, "radialBins", 100, 1);
     axialBins_ = getLabelOrDefault(analysisDict, "axialBins", 100, 1);
 
-    // Case writing
-    const dictionary& cfdDict = dict.subOrEmptyDict("cfdCase");
-    cellsPerDiameter_ = getLabelOrDefault(cfdDict, "cellsPerDiameter", 8, 1);
-    contactTreatment_ = getChoiceOrDefault
+    // Case writing: every option now, the bed height after the run. The
+    // tube axis is z through the origin, its floor at z = 0.
+    caseSettings_.reset
     (
-        cfdDict, "contactTreatment", "none",
-        {"none", "shrink", "bridges", "caps"}
-    );
-    stlFormat_ = getChoiceOrDefault
-    (
-        cfdDict, "stlFormat", "ascii", {"ascii", "binary"}
+        new bedCaseSettings
+        (
+            tube_.diameter(),
+            shape.volumeEquivalentDiameter(),
+            point::zero,
+            dict.subOrEmptyDict("cfdCase")
+        )
     );
 
     world_.reset
@@ -217,7 +217,103 @@ Foam::scalar Foam::rbd::packedBed::bedHeight() const
 }
 
 
+Foam::rbd::bedCaseWriter::insideFunction
+Foam::rbd::packedBed::insidePellet(const scalar scale) const
+{
+    pointField centres(world_->bodies().size());
+    forAll(centres, i)
+    {
+        centres[i] = world_->bodies()[i].x();
+    }
+    return insideAnySphere(centres, scale*shape_->boundingRadius());
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::rbd::bedCaseWriter::insideFunction
+Foam::rbd::packedBed::insideAnySphere
+(
+    const UList<point>& centres,
+    const scalar r
+)
+{
+    if (centres.empty() || !(r > 0))
+    {
+        return [](const point&) { return false; };
+    }
+
+    // A point can only be inside spheres whose centres lie in its own cell
+    // or in one of the 26 around it
+    const scalar h = 2*r;
+    boundBox bb;
+    for (const point& c : centres)
+    {
+        bb.add(c);
+    }
+    const point origin = bb.min();
+    labelVector n;
+    for (direction i = 0; i < 3; ++i)
+    {
+        n[i] = label(std::floor((bb.max()[i] - origin[i])/h)) + 1;
+    }
+
+    const auto cellOf = [origin, h](const point& p, const direction i)
+    {
+        return label(std::floor((p[i] - origin[i])/h));
+    };
+
+    auto cells = std::make_shared<List<DynamicList<point>>>
+    (
+        n.x()*n.y()*n.z()
+    );
+    for (const point& c : centres)
+    {
+        (*cells)[cellOf(c, 0) + n.x()*(cellOf(c, 1) + n.y()*cellOf(c, 2))]
+            .append(c);
+    }
+
+    return [cells, cellOf, n, r](const point& p)
+    {
+        const labelVector c(cellOf(p, 0), cellOf(p, 1), cellOf(p, 2));
+        const labelVector lo
+        (
+            max(c.x() - 1, 0), max(c.y() - 1, 0), max(c.z() - 1, 0)
+        );
+        const labelVector hi
+        (
+            min(c.x() + 1, n.x() - 1),
+            min(c.y() + 1, n.y() - 1),
+            min(c.z() + 1, n.z() - 1)
+        );
+        for (label k = lo.z(); k <= hi.z(); ++k)
+        {
+            for (label j = lo.y(); j <= hi.y(); ++j)
+            {
+                for (label i = lo.x(); i <= hi.x(); ++i)
+                {
+                    for (const point& x : (*cells)[i + n.x()*(j + n.y()*k)])
+                    {
+                        if (magSqr(p - x) < sqr(r))
+                        {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        return false;
+    };
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::rbd::packedBed::setOverwrite(const bool overwrite)
+{
+    caseSettings_->setOverwrite(overwrite);
+}
+
 
 void Foam::rbd::packedBed::writeSettings(Ostream& os) const
 {
@@ -263,9 +359,7 @@ void Foam::rbd::packedBed::writeSettings(Ostream& os) const
     os.endBlock();
 
     os.beginBlock("cfdCase");
-    os.writeEntry("cellsPerDiameter", cellsPerDiameter_);
-    os.writeEntry("contactTreatment", contactTreatment_);
-    os.writeEntry("stlFormat", stlFormat_);
+    caseSettings_->write(os);
     os.endBlock();
 
     const pelletShape& shape = shape_();
@@ -391,10 +485,13 @@ void Foam::rbd::packedBed::write() const
     const scalar H =
         porosityHeight_ > 0 ? porosityHeight_ : bedHeight() - shape.diameter();
 
+    bedCaseSettings caseSettings(caseSettings_());
+    caseSettings.setBedHeight(bedHeight());
+
     bedOutput out(runTime_.path(), tube_, shape, w.bodies());
     out.writePellets();
     const scalar eps = out.writeProfiles(H, radialBins_, axialBins_);
-    out.writeSTL(stlFormat_ == "binary");
+    out.writeSTL(caseSettings.binarySTL(), caseSettings.pelletScale());
 
     dictionary summary;
     summary.add("pellets", w.bodies().size());
@@ -406,6 +503,13 @@ void Foam::rbd::packedBed::write() const
     summary.add("bulkPorosity", eps);
     summary.add("porosityHeight", H);
     summary.add("bedHeight", bedHeight());
+    // Porosity of the whole bed, floor to top: every pellet lies in it
+    summary.add
+    (
+        "bedPorosity",
+        1 - w.bodies().size()*shape.volume()
+       /(pi*sqr(tube_.radius())*bedHeight())
+    );
     summary.add("maxOverlap", w.stats().maxOverlap);
     summary.add("finalMaxOverlap", finalOverlap_);
     summary.add("simulatedTime", w.time());
@@ -423,6 +527,26 @@ void Foam::rbd::packedBed::write() const
         << 100*w.stats().maxOverlap/shape.diameter() << " % of dp)" << nl
         << "Wrote " << out.directory() << " and " << out.stlFile() << nl
         << endl;
+
+    // The CFD case around the bed
+    bedCaseWriter writer
+    (
+        runTime_.path(),
+        caseSettings,
+        insidePellet(caseSettings.pelletScale())
+    );
+    const fileNameList kept = writer.write();
+
+    Info<< "CFD case (simpleFoam, laminar):" << nl;
+    caseSettings.write(Info);
+    Info<< "Wrote " << bedCaseWriter::files().size() - kept.size()
+        << " case files";
+    if (kept.size())
+    {
+        Info<< ", kept " << kept.size() << " the case already had"
+            << " (rbdPackBed -overwrite to replace them)";
+    }
+    Info<< nl << endl;
 }
 
 

@@ -16,7 +16,14 @@ Description
 
     Reads system/packingDict (see the tutorials for a commented example);
     writes postProcessing/rbdPackBed/{summary,pellets.csv,
-    radialPorosity.dat,axialPorosity.dat} and constant/triSurface/pellets.stl.
+    radialPorosity.dat,axialPorosity.dat} and constant/triSurface/pellets.stl,
+    and the CFD case around the bed for blockMesh, surfaceFeatureExtract,
+    snappyHexMesh and simpleFoam (constant/triSurface/tube.stl, system/
+    {blockMeshDict,surfaceFeatureExtractDict,snappyHexMeshDict,
+    decomposeParDict,controlDict,fvSchemes,fvSolution}, constant/
+    {transportProperties,turbulenceProperties}, 0/{U,p}; options in the
+    cfdCase sub-dictionary). Case files that exist are kept unless
+    -overwrite (or cfdCase/overwrite).
     Every dictionary entry is validated before anything runs or is written.
 
 Usage
@@ -25,6 +32,9 @@ Usage
     Options:
       - \par -dict \<file\>
         Read this dictionary instead of system/packingDict
+
+      - \par -overwrite
+        Replace the CFD case files the case already has
 
 \*---------------------------------------------------------------------------*/
 
@@ -51,6 +61,12 @@ int main(int argc, char *argv[])
         "dict",
         "file",
         "Read this dictionary instead of system/packingDict"
+    );
+    argList::addBoolOption
+    (
+        "overwrite",
+        "Replace the CFD case files (system/, constant/, 0/) the case"
+        " already has"
     );
 
     #include "setRootCase.H"
@@ -88,6 +104,10 @@ int main(int argc, char *argv[])
 
     // Validate everything, then run, then write
     rbd::packedBed bed(runTime, packingDict);
+    if (args.found("overwrite"))
+    {
+        bed.setOverwrite(true);
+    }
     bed.writeSettings(Info);
     bed.run();
     bed.write();

@@ -4,6 +4,7 @@
 
 #include "bedCaseSettings.H"
 #include "dictionaryChecks.H"
+#include "Switch.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
@@ -28,7 +29,8 @@ const Foam::wordList Foam::rbd::bedCaseSettings::knownEntries
     "U",
     "nIterations",
     "nProcessors",
-    "overwrite"
+    "overwrite",
+    "stlFormat"
 });
 
 
@@ -60,22 +62,11 @@ namespace
 
 void Foam::rbd::bedCaseSettings::setGrid()
 {
-    if
-    (
-        !(tubeDiameter_ > 0) || !(pelletDiameter_ > 0) || !(bedHeight_ > 0)
-    )
+    if (!(bedHeight_ > 0))
     {
         FatalErrorInFunction
-            << "Bed geometry must be positive: tubeDiameter "
-            << tubeDiameter_ << ", pelletDiameter " << pelletDiameter_
-            << ", bedHeight " << bedHeight_ << " [m]" << exit(FatalError);
-    }
-    if (!(tubeDiameter_ > pelletDiameter_))
-    {
-        FatalErrorInFunction
-            << "The tube (diameter " << tubeDiameter_ << " m) must be wider"
-            << " than the pellets (" << pelletDiameter_ << " m)"
-            << exit(FatalError);
+            << "Bed geometry must be positive: bedHeight " << bedHeight_
+            << " [m]" << exit(FatalError);
     }
 
     const scalar h = cellSize();
@@ -118,14 +109,13 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
 (
     const scalar tubeDiameter,
     const scalar pelletDiameter,
-    const scalar bedHeight,
     const point& floorCentre,
     const dictionary& options
 )
 :
     tubeDiameter_(tubeDiameter),
     pelletDiameter_(pelletDiameter),
-    bedHeight_(bedHeight),
+    bedHeight_(0),
     floorCentre_(floorCentre),
     cellsPerDiameter_(getLabelOrDefault(options, "cellsPerDiameter", 8, 2)),
     pelletLevel_(getLabelOrDefault(options, "pelletLevel", 1, 0)),
@@ -154,11 +144,33 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
     nIterations_(getLabelOrDefault(options, "nIterations", 2000, 1)),
     nProcessors_(getLabelOrDefault(options, "nProcessors", 2, 1)),
     overwrite_(options.getOrDefault<bool>("overwrite", false)),
+    binarySTL_
+    (
+        getChoiceOrDefault
+        (
+            options, "stlFormat", "ascii", wordList({"ascii", "binary"})
+        ) == "binary"
+    ),
     blockMin_(Zero),
     blockMax_(Zero),
     blockCells_(Zero)
 {
     checkKnownEntries(options, knownEntries);
+
+    if (!(tubeDiameter_ > 0) || !(pelletDiameter_ > 0))
+    {
+        FatalErrorInFunction
+            << "Bed geometry must be positive: tubeDiameter "
+            << tubeDiameter_ << ", pelletDiameter " << pelletDiameter_
+            << " [m]" << exit(FatalError);
+    }
+    if (!(tubeDiameter_ > pelletDiameter_))
+    {
+        FatalErrorInFunction
+            << "The tube (diameter " << tubeDiameter_ << " m) must be wider"
+            << " than the pellets (" << pelletDiameter_ << " m)"
+            << exit(FatalError);
+    }
 
     if (options.found("U"))
     {
@@ -177,8 +189,21 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
         const scalar Re = getPositiveOrDefault(options, "Re", 1, "-");
         velocity_ = Re*nu_/pelletDiameter_;
     }
+}
 
-    setGrid();
+
+Foam::rbd::bedCaseSettings::bedCaseSettings
+(
+    const scalar tubeDiameter,
+    const scalar pelletDiameter,
+    const scalar bedHeight,
+    const point& floorCentre,
+    const dictionary& options
+)
+:
+    bedCaseSettings(tubeDiameter, pelletDiameter, floorCentre, options)
+{
+    setBedHeight(bedHeight);
 }
 
 
@@ -197,6 +222,13 @@ Foam::rbd::bedCaseSettings::bedCaseSettings(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::rbd::bedCaseSettings::setBedHeight(const scalar bedHeight)
+{
+    bedHeight_ = bedHeight;
+    setGrid();
+}
+
+
 Foam::scalar Foam::rbd::bedCaseSettings::pelletScale() const
 {
     return contactTreatment_ == "shrink" ? shrinkFactor_ : 1;
@@ -205,15 +237,27 @@ Foam::scalar Foam::rbd::bedCaseSettings::pelletScale() const
 
 void Foam::rbd::bedCaseSettings::write(Ostream& os) const
 {
-    os.writeEntry("tubeDiameter", tubeDiameter_);
-    os.writeEntry("pelletDiameter", pelletDiameter_);
-    os.writeEntry("bedHeight", bedHeight_);
-    os.writeEntry("floorCentre", floorCentre_);
+    if (hasBedHeight())
+    {
+        os.writeEntry("tubeDiameter", tubeDiameter_);
+        os.writeEntry("pelletDiameter", pelletDiameter_);
+        os.writeEntry("bedHeight", bedHeight_);
+        os.writeEntry("floorCentre", floorCentre_);
+    }
     os.writeEntry("cellsPerDiameter", cellsPerDiameter_);
     os.writeEntry("pelletLevel", pelletLevel_);
     os.writeEntry("wallLevel", wallLevel_);
-    os.writeEntry("inletLength", inletLength());
-    os.writeEntry("outletLength", outletLength());
+    if (hasBedHeight())
+    {
+        // As meshed: rounded to the background grid
+        os.writeEntry("inletLength", inletLength());
+        os.writeEntry("outletLength", outletLength());
+    }
+    else
+    {
+        os.writeEntry("inletLength", inletLengthRequested_);
+        os.writeEntry("outletLength", outletLengthRequested_);
+    }
     os.writeEntry("contactTreatment", contactTreatment_);
     if (contactTreatment_ == "shrink")
     {
@@ -224,10 +268,14 @@ void Foam::rbd::bedCaseSettings::write(Ostream& os) const
     os.writeEntry("Re", reynoldsNumber());
     os.writeEntry("nIterations", nIterations_);
     os.writeEntry("nProcessors", nProcessors_);
-    os.writeEntry("overwrite", overwrite_);
-    os.writeEntry("blockMin", blockMin_);
-    os.writeEntry("blockMax", blockMax_);
-    os.writeEntry("blockCells", blockCells_);
+    os.writeEntry("overwrite", Switch(overwrite_));
+    os.writeEntry("stlFormat", word(binarySTL_ ? "binary" : "ascii"));
+    if (hasBedHeight())
+    {
+        os.writeEntry("blockMin", blockMin_);
+        os.writeEntry("blockMax", blockMax_);
+        os.writeEntry("blockCells", blockCells_);
+    }
 }
 
 

@@ -102,7 +102,14 @@ Foam::rbd::bedCaseWriter::bedCaseWriter
     settings_(settings),
     insidePellet_(insidePellet),
     surfaces_()
-{}
+{
+    if (!settings_.hasBedHeight())
+    {
+        FatalErrorInFunction
+            << "The bed height has not been given to the case settings"
+            << " (bedCaseSettings::setBedHeight)" << exit(FatalError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pressureDropComparison.H"
-#include "pressureDropCorrelations.H"
+#include "correlations.H"
 #include "bedCaseWriter.H"
 #include "foamFile.H"
 #include "dictionaryChecks.H"
@@ -13,6 +13,15 @@
 #include "mathematicalConstants.H"
 #include "dimensionedScalar.H"
 #include <sstream>
+
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::rbd::pressureDropComparison::shapes
+({
+    "spheres",
+    "cylinders"
+});
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -34,6 +43,14 @@ namespace
                 << " axis (z): normal " << normal << exit(FatalIOError);
         }
         return planeDict.get<point>("point").z();
+    }
+
+    //- Eisfeld & Schnitzlein's constants for a family of shapes
+    rbd::correlations::eisfeldSchnitzleinShape esShape(const word& shape)
+    {
+        return shape == "cylinders"
+            ? rbd::correlations::eisfeldSchnitzleinShape::cylinder
+            : rbd::correlations::eisfeldSchnitzleinShape::sphere;
     }
 }
 
@@ -114,23 +131,38 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
     pBottom_(0),
     pTop_(0)
 {
-    if (!pressureDropCorrelations::shapes.found(shape_))
-    {
-        FatalErrorInFunction
-            << "Unknown pellet shape '" << shape_ << "'; have "
-            << pressureDropCorrelations::shapes << exit(FatalError);
-    }
-
     const dictionary summary
     (
         readFoamFile(caseDir_/"postProcessing/rbdPackBed/summary")
     );
-    porosity_ = getInRangeOrDefault(summary, "bulkPorosity", -1, 0, 1, "-");
+
+    if (shape_.empty())
+    {
+        const word pellet = summary.getOrDefault<word>("shape", "unknown");
+        if (pellet == "sphere" || pellet == "cylinder")
+        {
+            shape_ = pellet + "s";
+        }
+        else
+        {
+            FatalErrorInFunction
+                << "No Eisfeld-Schnitzlein constants for pellets of shape '"
+                << pellet << "' (summary of " << caseDir_ << "); name the"
+                << " family to use: one of " << shapes << exit(FatalError);
+        }
+    }
+    if (!shapes.found(shape_))
+    {
+        FatalErrorInFunction
+            << "No Eisfeld-Schnitzlein constants for shape '" << shape_
+            << "'; have " << shapes << exit(FatalError);
+    }
+    porosity_ = getInRangeOrDefault(summary, "bedPorosity", -1, 0, 1, "-");
     if (!(porosity_ > 0 && porosity_ < 1))
     {
         badEntry
         (
-            summary, "bulkPorosity", porosity_, "a number in (0, 1)"
+            summary, "bedPorosity", porosity_, "a number in (0, 1)"
         );
     }
     tubeDiameter_ = getPositive(summary, "tubeDiameter", "m");
@@ -179,18 +211,17 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
 
 Foam::scalar Foam::rbd::pressureDropComparison::ergun() const
 {
-    return pressureDropCorrelations::ergun
-    (
-        porosity_, pelletDiameter_, velocity_, nu_, 1
-    );
+    // Kinematic form: mu = nu, rho = 1
+    return correlations::ergun(nu_, 1, velocity_, porosity_, pelletDiameter_);
 }
 
 
 Foam::scalar Foam::rbd::pressureDropComparison::eisfeldSchnitzlein() const
 {
-    return pressureDropCorrelations::eisfeldSchnitzlein
+    return correlations::eisfeldSchnitzlein
     (
-        porosity_, pelletDiameter_, tubeDiameter_, velocity_, nu_, 1, shape_
+        nu_, 1, velocity_, porosity_, pelletDiameter_, tubeDiameter_,
+        esShape(shape_)
     );
 }
 
@@ -199,7 +230,7 @@ Foam::dictionary Foam::rbd::pressureDropComparison::results() const
 {
     dictionary d;
     d.add("shape", shape_);
-    d.add("bulkPorosity", porosity_);
+    d.add("bedPorosity", porosity_);
     d.add("tubeDiameter", tubeDiameter_);
     d.add("pelletDiameter", pelletDiameter_);
     d.add("bedHeight", bedHeight_);

@@ -94,7 +94,11 @@ Foam::scalar Foam::rbd::bedOutput::writeProfiles
 }
 
 
-void Foam::rbd::bedOutput::writeSTL(const bool binary) const
+void Foam::rbd::bedOutput::writeSTL
+(
+    const bool binary,
+    const scalar scale
+) const
 {
     if (!shape_.isSphere())
     {
@@ -102,7 +106,17 @@ void Foam::rbd::bedOutput::writeSTL(const bool binary) const
             << "STL output of '" << shape_.type() << "' pellets is not "
             << "implemented yet" << exit(FatalError);
     }
-    const triMesh body(pelletMeshes::sphere(shape_.diameter(), shape_.faces()));
+    if (!(scale > 0))
+    {
+        FatalErrorInFunction
+            << "Pellet scale must be > 0, not " << scale << exit(FatalError);
+    }
+    // Body frame: the centre of mass at the origin
+    triMesh body(pelletMeshes::sphere(shape_.diameter(), shape_.faces()));
+    if (scale != 1)
+    {
+        body.scale(scale);
+    }
 
     mkDir(stl_.path());
     const fileName tmp(stl_ + ".tmp");

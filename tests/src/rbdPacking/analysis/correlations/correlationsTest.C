@@ -128,6 +128,40 @@ TEST(correlations, pressureDropByHand)
     );
 }
 
+TEST(correlations, eisfeldSchnitzleinLimits)
+{
+    const scalar eps = 0.4, dp = 0.01, U = 0.1, mu = 1e-3, rho = 1000;
+    const auto sphere = corr::eisfeldSchnitzleinShape::sphere;
+
+    // dt >> dp: A -> 1, B -> k2^2; viscous term 154/150 of Ergun's,
+    // inertial term (1/k2^2)/1.75 of Ergun's
+    const scalar wide = 1e9*dp;
+    EXPECT_NEAR
+    (
+        corr::eisfeldSchnitzlein(mu, 0, U, eps, dp, wide, sphere)
+       /corr::ergun(mu, 0, U, eps, dp),
+        154.0/150.0, 1e-6
+    );
+    EXPECT_NEAR
+    (
+        corr::eisfeldSchnitzlein(0, rho, U, eps, dp, wide, sphere)
+       /corr::ergun(0, rho, U, eps, dp),
+        1/sqr(0.87)/1.75, 1e-6
+    );
+
+    // Creeping flow in a narrow tube: the wall factor (154/150) A^2
+    for (const scalar N : {3.0, 5.0, 10.0})
+    {
+        const scalar A = 1 + 2/(3*N*(1 - eps));
+        EXPECT_NEAR
+        (
+            corr::eisfeldSchnitzlein(mu, 0, U, eps, dp, N*dp, sphere)
+           /corr::ergun(mu, 0, U, eps, dp),
+            154.0/150.0*sqr(A), 1e-12
+        );
+    }
+}
+
 TEST(correlations, fitStatistics)
 {
     const scalarField y({1.0, 2.0, 3.0, 4.0});

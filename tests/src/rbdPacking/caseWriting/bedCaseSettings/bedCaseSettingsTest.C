@@ -163,3 +163,51 @@ TEST(bedCaseSettingsDeath, rejectsTubeNarrowerThanPellets)
         "must be wider than the pellets"
     );
 }
+
+TEST(bedCaseSettings, bedHeightGivenLater)
+{
+    // Options first (as rbdPackBed reads them before packing), bed height
+    // after: the same settings as with the bed height given at once
+    const dictionary options
+    (
+        rbd::parseDictionary("cellsPerDiameter 10; Re 2; stlFormat binary;")
+    );
+    rbd::bedCaseSettings later(4*dp, dp, point(0.1, -0.2, 0.5), options);
+    EXPECT_FALSE(later.hasBedHeight());
+    EXPECT_NEAR(later.reynoldsNumber(), 2, 1e-12);
+    EXPECT_TRUE(later.binarySTL());
+
+    later.setBedHeight(0.029);
+    const rbd::bedCaseSettings atOnce
+    (
+        4*dp, dp, 0.029, point(0.1, -0.2, 0.5), options
+    );
+    EXPECT_TRUE(later.hasBedHeight());
+    EXPECT_EQ(later.bedHeight(), atOnce.bedHeight());
+    EXPECT_EQ(later.blockCells(), atOnce.blockCells());
+    EXPECT_EQ(later.blockMin(), atOnce.blockMin());
+    EXPECT_EQ(later.blockMax(), atOnce.blockMax());
+    EXPECT_FALSE(make("").binarySTL());
+}
+
+TEST(bedCaseSettingsDeath, rejectsBadOptionsBeforeTheBedHeight)
+{
+    EXPECT_EXIT
+    (
+        rbd::bedCaseSettings
+        (
+            4*dp, dp, point::zero, rbd::parseDictionary("stlFormat obj;")
+        ),
+        ::testing::ExitedWithCode(1),
+        "stlFormat obj(.|\n)*one of ascii \\| binary"
+    );
+    EXPECT_EXIT
+    (
+        rbd::bedCaseSettings
+        (
+            4*dp, dp, point::zero, rbd::parseDictionary("pelletLevl 1;")
+        ),
+        ::testing::ExitedWithCode(1),
+        "Unknown entry 'pelletLevl'"
+    );
+}

@@ -348,6 +348,22 @@ TEST(bedCaseWriterDeath, writeStopsWithoutLocationInMesh)
 }
 
 
+TEST(bedCaseWriterDeath, refusesSettingsWithoutBedHeight)
+{
+    const caseWritingTest::tempDir tmp;
+    const rbd::bedCaseSettings noHeight(0.04, 0.01, point::zero, dictionary());
+    EXPECT_EXIT
+    (
+        rbd::bedCaseWriter
+        (
+            tmp.path(), noHeight, [](const point&) { return false; }
+        ),
+        ::testing::ExitedWithCode(1),
+        "bed height has not been given"
+    );
+}
+
+
 TEST(bedCaseWriter, tubeHasTheAreaOfTheCircleAndOutreachesTheBox)
 {
     const caseWritingTest::tempDir tmp;

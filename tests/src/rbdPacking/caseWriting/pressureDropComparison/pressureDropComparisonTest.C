@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 #include "pressureDropComparison.H"
-#include "pressureDropCorrelations.H"
+#include "correlations.H"
 #include "bedCaseWriter.H"
 #include "foamFile.H"
 #include "OFstream.H"
@@ -57,7 +57,8 @@ namespace
         rbd::writeFoamFile
         (
             caseDir/"postProcessing/rbdPackBed/summary", "dictionary",
-            "bulkPorosity 0.45; tubeDiameter 0.04; pelletDiameter 0.01;"
+            "shape sphere; bedPorosity 0.45; bulkPorosity 0.41;"
+            " tubeDiameter 0.04; pelletDiameter 0.01;"
             " bedHeight 0.05; porosityHeight 0.04;"
         );
 
@@ -90,20 +91,35 @@ TEST(pressureDropComparison, readsTheCaseAndComparesWithCorrelations)
     EXPECT_NEAR(c.superficialVelocity(), U, 1e-15);
     EXPECT_NEAR(c.reynoldsNumber(), U*dp/nu, 1e-12);
     EXPECT_NEAR(c.simulated(), (0.2 - 0.01)/H, 1e-12);
+    EXPECT_EQ(c.shape(), "spheres");
     EXPECT_NEAR
     (
-        c.ergun(),
-        rbd::pressureDropCorrelations::ergun(eps, dp, U, nu, 1), 1e-12
+        c.ergun(), rbd::correlations::ergun(nu, 1, U, eps, dp), 1e-12
     );
     EXPECT_NEAR
     (
         c.eisfeldSchnitzlein(),
-        rbd::pressureDropCorrelations::eisfeldSchnitzlein
+        rbd::correlations::eisfeldSchnitzlein
         (
-            eps, dp, D, U, nu, 1, "spheres"
+            nu, 1, U, eps, dp, D,
+            rbd::correlations::eisfeldSchnitzleinShape::sphere
         ),
         1e-12
     );
+
+    // Cylinder constants on request: a larger viscous term (K1 = 190)
+    const rbd::pressureDropComparison cyl(tmp.path(), "cylinders");
+    EXPECT_NEAR
+    (
+        cyl.eisfeldSchnitzlein(),
+        rbd::correlations::eisfeldSchnitzlein
+        (
+            nu, 1, U, eps, dp, D,
+            rbd::correlations::eisfeldSchnitzleinShape::cylinder
+        ),
+        1e-12
+    );
+    EXPECT_GT(cyl.eisfeldSchnitzlein(), c.eisfeldSchnitzlein());
 
     const fileName file = c.writeFile();
     const dictionary d(rbd::readFoamFile(file));
@@ -151,5 +167,30 @@ TEST(pressureDropComparisonDeath, stopsWithoutSummary)
         rbd::pressureDropComparison(tmp.path()).simulated(),
         ::testing::ExitedWithCode(1),
         "Cannot read .*summary"
+    );
+}
+
+
+TEST(pressureDropComparisonDeath, rejectsShapesWithoutConstants)
+{
+    const caseWritingTest::tempDir tmp;
+    writeCase(tmp.path());
+    EXPECT_EXIT
+    (
+        rbd::pressureDropComparison(tmp.path(), "rings").simulated(),
+        ::testing::ExitedWithCode(1),
+        "No Eisfeld-Schnitzlein constants for shape 'rings'"
+    );
+    rbd::writeFoamFile
+    (
+        tmp.path()/"postProcessing/rbdPackBed/summary", "dictionary",
+        "shape ring; bedPorosity 0.45; tubeDiameter 0.04;"
+        " pelletDiameter 0.01; bedHeight 0.05;"
+    );
+    EXPECT_EXIT
+    (
+        rbd::pressureDropComparison(tmp.path()).simulated(),
+        ::testing::ExitedWithCode(1),
+        "pellets of shape 'ring'(.|\n)*spheres(.|\n)*cylinders"
     );
 }
