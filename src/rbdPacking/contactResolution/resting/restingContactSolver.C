@@ -104,7 +104,6 @@ Foam::rbd::restingContactSolver::solve
 (
     const UList<rigidBody>& bodies,
     const UList<contact>& contacts,
-    const labelUList& resting,
     const boolList& fixed,
     const scalar h,
     UList<vector>& F,
@@ -112,8 +111,8 @@ Foam::rbd::restingContactSolver::solve
 ) const
 {
     result res;
-    res.contacts = resting.size();
-    if (resting.empty())
+    res.contacts = contacts.size();
+    if (contacts.empty())
     {
         return res;
     }
@@ -121,9 +120,8 @@ Foam::rbd::restingContactSolver::solve
     // Islands: contacts connected through bodies that move
     std::vector<label> parent(bodies.size());
     std::iota(parent.begin(), parent.end(), 0);
-    for (const label ci : resting)
+    for (const contact& c : contacts)
     {
-        const contact& c = contacts[ci];
         if (c.k >= 0 && !fixed[c.k])
         {
             parent[findRoot(parent, c.i)] = findRoot(parent, c.k);
@@ -132,7 +130,7 @@ Foam::rbd::restingContactSolver::solve
 
     std::vector<std::vector<label>> islandOf(bodies.size());
     std::vector<label> roots;
-    for (const label ci : resting)
+    forAll(contacts, ci)
     {
         const label r = findRoot(parent, contacts[ci].i);
         if (islandOf[r].empty())
@@ -144,9 +142,9 @@ Foam::rbd::restingContactSolver::solve
     res.islands = roots.size();
 
     bool anyFriction = false;
-    for (const label ci : resting)
+    for (const contact& c : contacts)
     {
-        anyFriction = anyFriction || contacts[ci].mu > 0;
+        anyFriction = anyFriction || c.mu > 0;
     }
 
     // External forces (gravity) kept apart from contact forces
@@ -155,8 +153,8 @@ Foam::rbd::restingContactSolver::solve
     List<vector> Ffric(F.size(), Zero);
     List<vector> tauFric(F.size(), Zero);
 
-    // Friction of each resting contact [N], by position in 'resting'
-    List<vector> friction(resting.size(), Zero);
+    // Friction of each contact [N]
+    List<vector> friction(contacts.size(), Zero);
 
     std::vector<row> rowsI, rowsK;
     std::vector<std::vector<label>> bodyContacts;
@@ -272,22 +270,16 @@ Foam::rbd::restingContactSolver::solve
         }
     };
 
-    // Position of each resting contact in 'resting'
-    std::vector<label> slot(contacts.size(), -1);
-    forAll(resting, s)
-    {
-        slot[resting[s]] = s;
-    }
-
     // Pass 1: normal forces without friction
     List<scalar> phiAll(contacts.size(), scalar(0));
     for (const label r : roots)
     {
         Eigen::VectorXd phi;
         solveIsland(islandOf[r], Fext, tauExt, phi);
-        forAll(islandOf[r], a)
+        const std::vector<label>& island = islandOf[r];
+        for (size_t a = 0; a < island.size(); ++a)
         {
-            phiAll[islandOf[r][a]] = phi(a);
+            phiAll[island[a]] = phi(a);
         }
     }
 
@@ -297,7 +289,7 @@ Foam::rbd::restingContactSolver::solve
         // to mu phi (eq 9); two Gauss-Seidel sweeps for coupled contacts
         List<vector> Ftot(Fext);
         List<vector> tauTot(tauExt);
-        for (const label ci : resting)
+        forAll(contacts, ci)
         {
             applyForce
             (
@@ -308,7 +300,7 @@ Foam::rbd::restingContactSolver::solve
 
         for (label sweep = 0; sweep < 2; ++sweep)
         {
-            for (const label ci : resting)
+            forAll(contacts, ci)
             {
                 const contact& c = contacts[ci];
                 const scalar limit = c.mu*phiAll[ci];
@@ -316,7 +308,7 @@ Foam::rbd::restingContactSolver::solve
                 {
                     continue;
                 }
-                vector& f = friction[slot[ci]];
+                vector& f = friction[ci];
 
                 // Remove this contact's friction, then predict the slip
                 applyForce(c, -f, bodies, fixed, Ftot, tauTot);
@@ -360,9 +352,10 @@ Foam::rbd::restingContactSolver::solve
         {
             Eigen::VectorXd phi;
             solveIsland(islandOf[r], Fb, tb, phi);
-            forAll(islandOf[r], a)
+            const std::vector<label>& island = islandOf[r];
+            for (size_t a = 0; a < island.size(); ++a)
             {
-                phiAll[islandOf[r][a]] = phi(a);
+                phiAll[island[a]] = phi(a);
             }
         }
     }
@@ -373,7 +366,7 @@ Foam::rbd::restingContactSolver::solve
         F[b] = Fext[b] + Ffric[b];
         tau[b] = tauExt[b] + tauFric[b];
     }
-    for (const label ci : resting)
+    forAll(contacts, ci)
     {
         applyForce
         (

@@ -95,4 +95,25 @@ void Foam::rbd::sphereContacts::sphereTube
 }
 
 
+Foam::scalar Foam::rbd::sphereContacts::gap
+(
+    const contact& c,
+    const UList<rigidBody>& bodies,
+    const scalar a,
+    const tube& container
+)
+{
+    const point& xi = bodies[c.i].x();
+    if (c.k == tubeBottom)
+    {
+        return xi.z() - a;
+    }
+    if (c.k == tubeWall)
+    {
+        return container.radius() - tube::axialDistance(xi) - a;
+    }
+    return mag(xi - bodies[c.k].x()) - 2*a;
+}
+
+
 // ************************************************************************* //

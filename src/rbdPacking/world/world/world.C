@@ -61,7 +61,6 @@ Foam::rbd::world::world
     ),
     resting_(controls.dict),
     contacts_(),
-    restingList_(),
     F_(),
     tau_(),
     time_(0),
@@ -167,23 +166,6 @@ void Foam::rbd::world::findContacts()
 
 void Foam::rbd::world::projectOverlaps()
 {
-    // Gap of a sphere contact at the current positions
-    const scalar a = rb_;
-    const scalar R = tube_.radius();
-    auto gapOf = [&](const contact& c) -> scalar
-    {
-        const point& xi = bodies_[c.i].x();
-        if (c.k == tubeBottom)
-        {
-            return xi.z() - a;
-        }
-        if (c.k == tubeWall)
-        {
-            return R - tube::axialDistance(xi) - a;
-        }
-        return mag(xi - bodies_[c.k].x()) - 2*a;
-    };
-
     // Gauss-Seidel sweeps until no interpenetration exceeds the slop; each
     // correction leaves half the slop, so that a jammed set of contacts
     // (a column wedged between neighbours and the wall) settles at
@@ -194,7 +176,7 @@ void Foam::rbd::world::projectOverlaps()
         bool moved = false;
         for (contact& c : contacts_)
         {
-            c.gap = gapOf(c);
+            c.gap = sphereContacts::gap(c, bodies_, rb_, tube_);
             if (c.gap >= -slop_)
             {
                 continue;
@@ -355,12 +337,6 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     //    constraint of a separating or distant contact is inactive unless
     //    the forces of its neighbours would drive it into interpenetration
     //    within the step, which is exactly when it must act.
-    restingList_.clear();
-    forAll(contacts_, ci)
-    {
-        restingList_.append(ci);
-    }
-
     F_.setSize(bodies_.size());
     tau_.setSize(bodies_.size());
     forAll(bodies_, i)
@@ -369,11 +345,11 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
         tau_[i] = Zero;
     }
 
-    if (restingList_.size())
+    if (contacts_.size())
     {
         const restingContactSolver::result rr = resting_.solve
         (
-            bodies_, contacts_, restingList_, fixed_, h, F_, tau_
+            bodies_, contacts_, fixed_, h, F_, tau_
         );
         ++stats_.restingSolves;
         stats_.largestIsland = max(stats_.largestIsland, rr.largestIsland);
