@@ -4,6 +4,7 @@
 
 #include "cylinder.H"
 #include "dictionaryChecks.H"
+#include "pelletMeshes.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -74,6 +75,12 @@ void Foam::rbd::cylinder::write(Ostream& os) const
     pelletShape::write(os);
     os.writeEntry("diameter", d_);
     os.writeEntry("height", h_);
+}
+
+
+Foam::rbd::triMesh Foam::rbd::cylinder::buildMesh() const
+{
+    return pelletMeshes::cylinder(d_, h_, faces_);
 }
 
 

@@ -37,7 +37,8 @@ Foam::rbd::pelletShape::pelletShape
         dict.found("faces")
       ? getLabelOrDefault(dict, "faces", defaultFaces, 20)
       : defaultFaces
-    )
+    ),
+    mesh_()
 {}
 
 
@@ -53,6 +54,16 @@ Foam::scalar Foam::rbd::pelletShape::sphericity() const
 {
     return
         cbrt(constant::mathematical::pi)*pow(6*volume(), 2.0/3.0)/area();
+}
+
+
+const Foam::rbd::triMesh& Foam::rbd::pelletShape::mesh() const
+{
+    if (!mesh_)
+    {
+        mesh_.reset(new triMesh(buildMesh()));
+    }
+    return *mesh_;
 }
 
 

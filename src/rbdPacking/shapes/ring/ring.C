@@ -4,6 +4,7 @@
 
 #include "ring.H"
 #include "dictionaryChecks.H"
+#include "pelletMeshes.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -86,6 +87,12 @@ void Foam::rbd::ring::write(Ostream& os) const
     os.writeEntry("diameter", d_);
     os.writeEntry("innerDiameter", di_);
     os.writeEntry("height", h_);
+}
+
+
+Foam::rbd::triMesh Foam::rbd::ring::buildMesh() const
+{
+    return pelletMeshes::ring(d_, di_, h_, faces_);
 }
 
 

@@ -4,6 +4,7 @@
 
 #include "sphere.H"
 #include "dictionaryChecks.H"
+#include "pelletMeshes.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -70,6 +71,12 @@ void Foam::rbd::sphere::write(Ostream& os) const
 {
     pelletShape::write(os);
     os.writeEntry("diameter", d_);
+}
+
+
+Foam::rbd::triMesh Foam::rbd::sphere::buildMesh() const
+{
+    return pelletMeshes::sphere(d_, faces_);
 }
 
 

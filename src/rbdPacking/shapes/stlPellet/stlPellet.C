@@ -28,7 +28,7 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
     pelletShape(dict, 0),
     file_(dict.get<fileName>("file")),
     scale_(getPositiveOrDefault(dict, "scale", 1, "-")),
-    mesh_(),
+    surface_(),
     volume_(0),
     inertia_(Zero)
 {
@@ -55,12 +55,12 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
     }
 
     const massProperties mp(surface, 1);
-    mesh_ = mp.toPrincipalFrame(surface);
+    surface_ = mp.toPrincipalFrame(surface);
     volume_ = mp.volume();
     inertia_ = mp.principalMoments();
     if (faces_ == 0)
     {
-        faces_ = mesh_.nFaces();
+        faces_ = surface_.nFaces();
     }
 }
 
@@ -72,7 +72,7 @@ void Foam::rbd::stlPellet::write(Ostream& os) const
     pelletShape::write(os);
     os.writeEntry("file", file_);
     os.writeEntry("scale", scale_);
-    os.writeKeyword("mesh") << mesh_.nFaces() << " faces, volume "
+    os.writeKeyword("mesh") << surface_.nFaces() << " faces, volume "
         << volume_ << " m^3, bounding radius " << boundingRadius() << " m"
         << token::END_STATEMENT << nl;
 }
