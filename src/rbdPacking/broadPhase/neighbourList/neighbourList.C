@@ -33,6 +33,7 @@ Foam::rbd::neighbourList::neighbourList(const scalar skin)
     pairs_(),
     x0_(),
     cutoff0_(-1),
+    maxMoved_(0),
     nBuilds_(0)
 {}
 
@@ -47,17 +48,14 @@ bool Foam::rbd::neighbourList::update
 {
     bool rebuild = (x.size() != x0_.size()) || (cutoff != cutoff0_);
 
+    scalar moved2 = 0;
     if (!rebuild)
     {
-        const scalar limit2 = sqr(0.5*skin_);
         forAll(x, i)
         {
-            if (magSqr(x[i] - x0_[i]) > limit2)
-            {
-                rebuild = true;
-                break;
-            }
+            moved2 = max(moved2, magSqr(x[i] - x0_[i]));
         }
+        rebuild = moved2 > sqr(0.5*skin_);
     }
 
     if (rebuild)
@@ -65,8 +63,10 @@ bool Foam::rbd::neighbourList::update
         gridPairs(x, cutoff + skin_, pairs_);
         x0_ = x;
         cutoff0_ = cutoff;
+        moved2 = 0;
         ++nBuilds_;
     }
+    maxMoved_ = Foam::sqrt(moved2);
 
     return rebuild;
 }

@@ -15,6 +15,8 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
     restingVelocity(getPositiveOrDefault(d, "restingVelocity", 0.01, "m/s")),
     slipVelocity(getPositiveOrDefault(d, "slipVelocity", 1e-4, "m/s")),
     proximity(getPositiveOrDefault(d, "proximity", 0.1, "-")),
+    neighbourSkin(getInRangeOrDefault(d, "neighbourSkin", 0.5, 0.01, 4,
+        "-")),
     contactTolerance(getInRangeOrDefault(d, "contactTolerance", 1e-4,
         1e-9, 0.01, "-")),
     restitutionSweeps(getLabelOrDefault(d, "restitutionSweeps", 10, 0)),
@@ -31,7 +33,7 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
         d,
         {
             "deltaT", "endTime", "gravity", "restingVelocity",
-            "slipVelocity", "proximity", "contactTolerance",
+            "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
             "restitutionSweeps", "maxSweeps", "sleepVelocity", "sleepTime",
             "settleTime", "settleEnergy", "logInterval", "lcpSolver",
             "baraffCoeffs", "projectedGaussSeidelCoeffs", "enumerationCoeffs"
@@ -63,6 +65,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("restingVelocity", restingVelocity);
     os.writeEntry("slipVelocity", slipVelocity);
     os.writeEntry("proximity", proximity);
+    os.writeEntry("neighbourSkin", neighbourSkin);
     os.writeEntry("contactTolerance", contactTolerance);
     os.writeEntry("restitutionSweeps", restitutionSweeps);
     os.writeEntry("maxSweeps", maxSweeps);
