@@ -10,7 +10,8 @@
 
 namespace
 {
-    //- Smallest h >= 0 with a/2 h^2 + b h = c (a, b, c >= 0, a + b > 0)
+    //- Smallest h >= 0 with a/2 h^2 + b h = c (a, b, c >= 0); GREAT if
+    //  a = b = 0
     Foam::scalar timeToCover
     (
         const Foam::scalar a,
@@ -20,7 +21,7 @@ namespace
     {
         if (a <= 0)
         {
-            return c/b;
+            return b > 0 ? c/b : Foam::GREAT;
         }
         // Stable form of (-b + sqrt(b^2 + 2 a c))/a
         return 2*c/(b + Foam::sqrt(Foam::sqr(b) + 2*a*c));
@@ -51,7 +52,7 @@ Foam::rbd::world::world
     bodies_(),
     fixed_(),
     slowTime_(),
-    neighbours_(controls.proximity*shape.boundingRadius()),
+    neighbours_(controls.neighbourSkin*shape.boundingRadius()),
     collisions_
     (
         controls.restingVelocity,
@@ -210,39 +211,137 @@ void Foam::rbd::world::projectOverlaps()
 Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
 {
     const scalar g = controls_.gravity;
+    const scalar epsP = controls_.restingVelocity;
+
+    // Spheres: the gaps depend on the centres only, so rotation does not
+    // close them; otherwise the surface moves up to |omega| r_b faster
+    const bool centreGaps = shape_.isSphere();
+    auto surfaceSpeed = [&](const label i)
+    {
+        const rigidBody& b = bodies_[i];
+        return
+            fixed_[i] ? 0
+          : mag(b.v()) + (centreGaps ? 0 : mag(b.omega())*rb_);
+    };
+
+    // Time for a gap closing at rate u (acceleration up to a) to shrink to
+    // half the touching gap: the next step finds the pair touching and the
+    // collision stage resolves it (the paper's "back up to the last state
+    // before contact")
+    auto untilTouching = [&](const scalar gap, const scalar u, const scalar a)
+    {
+        return timeToCover(a, max(u, scalar(0)), max(gap - 0.5*touch_, 0.0));
+    };
+
     scalar h = hMax;
 
-    // No body moves more than lambda/10 (eq 38): no tunnelling
+    // 1. Pairs the broad phase has not listed are at least cutoff + the
+    //    unlisted clearance apart, i.e. their bounding spheres at least
+    //    lambda + clearance: no body may cover half of that
     scalar sMax = 0;
     forAll(bodies_, i)
     {
-        if (!fixed_[i])
+        sMax = max(sMax, surfaceSpeed(i));
+    }
+    h = min
+    (
+        h,
+        untilTouching
+        (
+            band_ + neighbours_.unlistedClearance(), 2*sMax, 2*g
+        )
+    );
+
+    // 2. Listed pairs apart by more than the band: their bounding spheres
+    //    may approach until touching
+    for (const labelPair& pr : neighbours_.pairs())
+    {
+        const label i = pr.first();
+        const label k = pr.second();
+        if (fixed_[i] && fixed_[k])
         {
-            const rigidBody& b = bodies_[i];
-            sMax = max(sMax, mag(b.v()) + mag(b.omega())*rb_);
+            continue;
+        }
+        const vector d(bodies_[i].x() - bodies_[k].x());
+        const scalar dist = mag(d);
+        const scalar gap = dist - 2*rb_;
+        if (gap > band_)
+        {
+            const vector vRel
+            (
+                (fixed_[i] ? Zero : bodies_[i].v())
+              - (fixed_[k] ? Zero : bodies_[k].v())
+            );
+            const scalar u =
+              - (vRel & d)/dist + surfaceSpeed(i) - mag(bodies_[i].v())
+              + surfaceSpeed(k) - mag(bodies_[k].v());
+            const scalar a = (fixed_[i] || fixed_[k]) ? g : 2*g;
+            h = min(h, untilTouching(gap, u, a));
         }
     }
-    h = min(h, timeToCover(g, sMax, 0.1*band_));
 
-    // No approaching contact closes past half the touching gap
-    const scalar epsP = controls_.restingVelocity;
+    // ... and the container, the same way
+    const scalar R = tube_.radius();
+    forAll(bodies_, i)
+    {
+        if (fixed_[i])
+        {
+            continue;
+        }
+        const rigidBody& b = bodies_[i];
+        const scalar spin = surfaceSpeed(i) - mag(b.v());
+        const scalar zGap = b.x().z() - rb_;
+        if (zGap > band_)
+        {
+            h = min(h, untilTouching(zGap, -b.v().z() + spin, g));
+        }
+        const vector rho(b.x().x(), b.x().y(), 0);
+        const scalar rhoMag = mag(rho);
+        const scalar wallGap = R - rhoMag - rb_;
+        if (wallGap > band_ && rhoMag > VSMALL)
+        {
+            const scalar u = (b.v() & rho)/rhoMag + spin;
+            h = min(h, untilTouching(wallGap, u, g));
+        }
+    }
+
+    // 3. Contacts within the band
     for (const contact& c : contacts_)
     {
+        const vector vRel
+        (
+            collisionResolver::relativeVelocity(c, bodies_, fixed_)
+        );
+
+        // Eq 38: delta_t <= 0.2 lambda/|v_ik|, the relative surface speed
+        // (spheres: of the centres)
+        const vector vSurface
+        (
+            centreGaps
+          ? (fixed_[c.i] ? Zero : bodies_[c.i].v())
+          - ((c.k < 0 || fixed_[c.k]) ? Zero : bodies_[c.k].v())
+          : vRel
+        );
+        const scalar speed = mag(vSurface);
+        if (speed > VSMALL)
+        {
+            h = min(h, 0.2*band_/speed);
+        }
+
+        // Approaching contacts stop at the touching gap
         if (c.gap > touch_)
         {
-            const scalar vn =
-                collisionResolver::relativeVelocity(c, bodies_, fixed_)
-              & c.n;
+            const scalar vn = (vRel & c.n);
             if (vn < -epsP)
             {
-                // Colliding soon: stop at the touching gap, gravity counted
-                h = min(h, timeToCover(g, -vn, c.gap - 0.5*touch_));
+                // Colliding soon: gravity counted
+                h = min(h, untilTouching(c.gap, -vn, g));
             }
             else if (vn < 0)
             {
                 // Resting approach: the resting-contact solve holds the
                 // acceleration, the step bounds the closing velocity
-                h = min(h, (c.gap - 0.5*touch_)/(-vn));
+                h = min(h, untilTouching(c.gap, -vn, 0));
             }
         }
     }
@@ -352,6 +451,7 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
             bodies_, contacts_, fixed_, h, F_, tau_
         );
         ++stats_.restingSolves;
+        stats_.lcpIterations += rr.iterations;
         stats_.largestIsland = max(stats_.largestIsland, rr.largestIsland);
         if (!rr.converged)
         {
