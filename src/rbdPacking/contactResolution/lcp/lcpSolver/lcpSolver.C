@@ -31,6 +31,18 @@ void Foam::rbd::lcpSolver::write(Ostream& os) const
 
 // * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
 
+Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
+(
+    const Eigen::SparseMatrix<double>& A,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    Eigen::VectorXd& f
+) const
+{
+    return solve(Eigen::MatrixXd(A), b, f);
+}
+
+
 Foam::scalar Foam::rbd::lcpSolver::violation
 (
     const Eigen::MatrixXd& A,
@@ -38,18 +50,52 @@ Foam::scalar Foam::rbd::lcpSolver::violation
     const Eigen::VectorXd& f
 )
 {
-    const Eigen::Index n = b.size();
-    if (n == 0)
+    if (b.size() == 0)
+    {
+        return 0;
+    }
+    return violation(A*f + b, b, f, A.cwiseAbs().maxCoeff());
+}
+
+
+Foam::scalar Foam::rbd::lcpSolver::violation
+(
+    const Eigen::SparseMatrix<double>& A,
+    const Eigen::VectorXd& b,
+    const Eigen::VectorXd& f
+)
+{
+    if (b.size() == 0)
+    {
+        return 0;
+    }
+    scalar aMax = 0;
+    for (Eigen::Index k = 0; k < A.nonZeros(); ++k)
+    {
+        aMax = max(aMax, mag(A.valuePtr()[k]));
+    }
+    return violation(Eigen::VectorXd(A*f + b), b, f, aMax);
+}
+
+
+Foam::scalar Foam::rbd::lcpSolver::violation
+(
+    const Eigen::VectorXd& w,
+    const Eigen::VectorXd& b,
+    const Eigen::VectorXd& f,
+    const scalar aMax
+)
+{
+    if (b.size() == 0)
     {
         return 0;
     }
 
-    const Eigen::VectorXd w = A*f + b;
     const scalar fRef = f.cwiseAbs().maxCoeff();
     scalar wRef = b.cwiseAbs().maxCoeff();
     if (wRef == 0)
     {
-        wRef = A.cwiseAbs().maxCoeff()*fRef;
+        wRef = aMax*fRef;
     }
 
     if (!std::isfinite(fRef) || !std::isfinite(wRef) || !w.allFinite())

@@ -197,6 +197,12 @@ namespace
     {
         "enumeration", "lcpSolver enumeration;", 1e-10
     };
+    const solverCase blockPivotingCase
+    {
+        "blockPivoting",
+        "lcpSolver blockPivoting; blockPivotingCoeffs { fallbackSize 0; }",
+        1e-8
+    };
 
     class lcpScenes
     :
@@ -327,7 +333,10 @@ INSTANTIATE_TEST_SUITE_P
 (
     allSolvers,
     lcpScenes,
-    ::testing::Values(baraffCase, pgsCase, enumerationCase),
+    ::testing::Values
+    (
+        baraffCase, pgsCase, enumerationCase, blockPivotingCase
+    ),
     [](const ::testing::TestParamInfo<solverCase>& info)
     {
         return std::string(info.param.name);
@@ -356,7 +365,7 @@ INSTANTIATE_TEST_SUITE_P
 (
     iterativeAndPivoting,
     lcpLargeScenes,
-    ::testing::Values(baraffCase, pgsCase),
+    ::testing::Values(baraffCase, pgsCase, blockPivotingCase),
     [](const ::testing::TestParamInfo<solverCase>& info)
     {
         return std::string(info.param.name);

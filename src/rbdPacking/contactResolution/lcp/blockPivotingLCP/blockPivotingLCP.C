@@ -1,0 +1,273 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "blockPivotingLCP.H"
+#include "baraffLCP.H"
+#include "dictionaryChecks.H"
+#include "addToRunTimeSelectionTable.H"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#include <Eigen/SparseCholesky>
+#pragma GCC diagnostic pop
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace rbd
+{
+    defineTypeNameAndDebug(blockPivotingLCP, 0);
+    addToRunTimeSelectionTable(lcpSolver, blockPivotingLCP, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::blockPivotingLCP::blockPivotingLCP(const dictionary& coeffs)
+:
+    lcpSolver(),
+    tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-9, "-")),
+    regularisation_
+    (
+        getInRangeOrDefault(coeffs, "regularisation", 1e-10, 1e-16, 1e-3, "-")
+    ),
+    maxIterations_(getLabelOrDefault(coeffs, "maxIterations", 200, 1)),
+    fallbackIterations_
+    (
+        getLabelOrDefault(coeffs, "fallbackIterations", 10, 1)
+    ),
+    fallbackSize_(getLabelOrDefault(coeffs, "fallbackSize", 400, 0)),
+    fallback_(new baraffLCP(dictionary()))
+{
+    checkKnownEntries
+    (
+        coeffs,
+        {
+            "tolerance", "regularisation", "maxIterations",
+            "fallbackIterations", "fallbackSize"
+        }
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
+(
+    const Eigen::MatrixXd& A,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& f
+) const
+{
+    if (!checkInput(A, b))
+    {
+        f = Eigen::VectorXd::Zero(b.size());
+        lcpResult result;
+        result.maxViolation = GREAT;
+        return result;
+    }
+    const Eigen::SparseMatrix<double> As(A.sparseView());
+    return solve(As, b, std::vector<bool>(), f);
+}
+
+
+Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
+(
+    const Eigen::SparseMatrix<double>& A,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    Eigen::VectorXd& f
+) const
+{
+    typedef Eigen::SparseMatrix<double> sparseMatrix;
+
+    const label n = b.size();
+    lcpResult result;
+    f = Eigen::VectorXd::Zero(n);
+
+    if (A.rows() != A.cols() || A.rows() != n)
+    {
+        FatalErrorInFunction
+            << "LCP of inconsistent size: A is " << label(A.rows()) << " x "
+            << label(A.cols()) << ", b has " << n << " entries" << nl
+            << exit(FatalError);
+    }
+    bool finite = b.allFinite();
+    scalar diagMax = 0;
+    for (label j = 0; j < n && finite; ++j)
+    {
+        for (sparseMatrix::InnerIterator it(A, j); it; ++it)
+        {
+            finite = finite && std::isfinite(it.value());
+            if (it.row() == j)
+            {
+                diagMax = max(diagMax, it.value());
+            }
+        }
+    }
+    if (!finite)
+    {
+        result.maxViolation = GREAT;
+        return result;
+    }
+
+    const scalar bRef = n ? b.cwiseAbs().maxCoeff() : 0;
+    if (n == 0 || bRef == 0 || diagMax <= 0)
+    {
+        // f = 0 is the solution, unless a contact that acts on nothing is
+        // pushed into interpenetration (then no f helps)
+        result.converged = (n == 0) || b.minCoeff() >= 0;
+        result.maxViolation = violation(A, b, f);
+        return result;
+    }
+    const scalar eps = regularisation_*diagMax;
+
+    // The active set F: the guess, else the contacts pushed together
+    std::vector<bool> inF(n);
+    for (label i = 0; i < n; ++i)
+    {
+        inF[i] = label(guess.size()) == n ? guess[i] : b(i) < 0;
+    }
+
+    std::vector<label> pos(n), members, infeasible;
+    std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::SimplicialLDLT<sparseMatrix> ldlt;
+    Eigen::VectorXd z(n), w(n);
+
+    // Judice-Pires: block exchanges while the number of infeasible
+    // contacts falls (or within three chances), else Murty's single
+    // exchange of the largest index
+    label fewest = n + 1;
+    label chances = 3;
+
+    const label iterations =
+        n <= fallbackSize_
+      ? min(maxIterations_, fallbackIterations_)
+      : maxIterations_;
+
+    for (label iter = 0; iter < iterations; ++iter)
+    {
+        members.clear();
+        for (label i = 0; i < n; ++i)
+        {
+            pos[i] = inF[i] ? label(members.size()) : -1;
+            if (inF[i])
+            {
+                members.push_back(i);
+            }
+        }
+
+        z.setZero();
+        const label m = members.size();
+        if (m)
+        {
+            triplets.clear();
+            for (label k = 0; k < m; ++k)
+            {
+                const label j = members[k];
+                for (sparseMatrix::InnerIterator it(A, j); it; ++it)
+                {
+                    const label r = pos[it.row()];
+                    if (r >= 0)
+                    {
+                        triplets.emplace_back(r, k, it.value());
+                    }
+                }
+                triplets.emplace_back(k, k, eps);
+            }
+            sparseMatrix AFF(m, m);
+            AFF.setFromTriplets(triplets.begin(), triplets.end());
+            ldlt.compute(AFF);
+            if (ldlt.info() != Eigen::Success)
+            {
+                // Not expected (A_FF + eps I is positive definite): leave
+                // it to the fallback, or to f = 0
+                break;
+            }
+            Eigen::VectorXd rhs(m);
+            for (label k = 0; k < m; ++k)
+            {
+                rhs(k) = -b(members[k]);
+            }
+            const Eigen::VectorXd zF(ldlt.solve(rhs));
+            for (label k = 0; k < m; ++k)
+            {
+                z(members[k]) = zF(k);
+            }
+        }
+        w = A*z + b;
+        result.iterations = iter + 1;
+
+        const scalar fRef = z.cwiseAbs().maxCoeff();
+        infeasible.clear();
+        for (label i = 0; i < n; ++i)
+        {
+            if
+            (
+                inF[i] ? z(i) < -tolerance_*fRef : w(i) < -tolerance_*bRef
+            )
+            {
+                infeasible.push_back(i);
+            }
+        }
+
+        if (infeasible.empty())
+        {
+            // The contacts in F carry w_F = -eps f_F: a compliance of
+            // round-off size, unless f runs away like 1/eps because no
+            // finite f solves the LCP (bodies driven into each other)
+            result.converged = eps*fRef <= std::sqrt(tolerance_)*bRef;
+            break;
+        }
+
+        const label nInfeasible = infeasible.size();
+        if (nInfeasible < fewest)
+        {
+            fewest = nInfeasible;
+            chances = 3;
+        }
+        else if (chances > 0)
+        {
+            --chances;
+        }
+        else
+        {
+            infeasible.assign(1, infeasible.back());
+        }
+        for (const label i : infeasible)
+        {
+            inF[i] = !inF[i];
+        }
+    }
+
+    if (!result.converged)
+    {
+        if (n <= fallbackSize_)
+        {
+            const label pivoted = result.iterations;
+            result = fallback_->solve(Eigen::MatrixXd(A), b, f);
+            result.iterations += pivoted;
+            return result;
+        }
+    }
+
+    f = z.cwiseMax(0.0);
+    result.maxViolation = violation(A, b, f);
+    return result;
+}
+
+
+void Foam::rbd::blockPivotingLCP::writeCoeffs(Ostream& os) const
+{
+    os.writeEntry("tolerance", tolerance_);
+    os.writeEntry("regularisation", regularisation_);
+    os.writeEntry("maxIterations", maxIterations_);
+    os.writeEntry("fallbackIterations", fallbackIterations_);
+    os.writeEntry("fallbackSize", fallbackSize_);
+}
+
+
+// ************************************************************************* //
