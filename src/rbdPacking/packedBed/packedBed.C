@@ -471,7 +471,8 @@ void Foam::rbd::packedBed::run()
     Info<< "Simulated " << w.time() << " s in " << s.steps << " steps ("
         << "smallest " << s.minStep << " s), " << s.collisions
         << " collisions, " << s.restingSolves << " resting-contact solves "
-        << "(largest island " << s.largestIsland << " contacts, "
+        << "(" << s.lcpIterations << " LCP iterations, largest island "
+        << s.largestIsland << " contacts, "
         << s.lcpFailures << " not converged), " << s.projections
         << " overlap corrections" << nl
         << "Wall time " << wallTime_ << " s" << nl << endl;

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <numeric>
 #include <vector>
+#include <cstdint>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -78,6 +79,16 @@ namespace
             F[c.k] -= f;
             tau[c.k] -= ((c.p - bodies[c.k].x()) ^ f);
         }
+    }
+
+    //- Key of the pair of a contact, the same whichever body is i
+    std::uint64_t pairKey(const contact& c)
+    {
+        const label a = max(c.i, c.k);
+        const label b = min(c.i, c.k);
+        return
+            (std::uint64_t(std::uint32_t(a)) << 32)
+          | std::uint32_t(b - label(tubeBottom));
     }
 
     //- One island's Jacobian rows: per contact and side, J = [lin, ang]
@@ -157,15 +168,21 @@ Foam::rbd::restingContactSolver::solve
     List<vector> friction(contacts.size(), Zero);
 
     std::vector<row> rowsI, rowsK;
-    std::vector<std::vector<label>> bodyContacts;
+    std::vector<std::vector<std::pair<label, bool>>> bodyRows(bodies.size());
+    std::vector<Eigen::Triplet<double>> triplets;
+    std::vector<bool> guess;
+
+    // Warm start: pairs active in the previous step (then in pass 1)
+    std::unordered_map<std::uint64_t, bool>& active = active_;
 
     auto solveIsland =
     [&](const std::vector<label>& cs, const UList<vector>& Fb,
         const UList<vector>& tb, Eigen::VectorXd& phi)
     {
         const label n = cs.size();
-        rowsI.assign(n, row());
-        rowsK.assign(n, row());
+        const row zero{Zero, Zero, Zero, Zero};
+        rowsI.assign(n, zero);
+        rowsK.assign(n, zero);
 
         // Jacobian rows and the bodies' contact lists
         std::vector<label> bodyList;
@@ -192,31 +209,48 @@ Foam::rbd::restingContactSolver::solve
             }
         }
 
-        // A = J M^-1 J^T, summed over the bodies two contacts share
-        Eigen::MatrixXd A(Eigen::MatrixXd::Zero(n, n));
+        // A = J M^-1 J^T, summed over the bodies two contacts share:
+        // sparse, from each moving body's list of the island's rows on it
+        std::vector<label> touched;
+        auto addRow = [&](const label body, const label a, const bool kSide)
+        {
+            if (body >= 0 && !fixed[body])
+            {
+                if (bodyRows[body].empty())
+                {
+                    touched.push_back(body);
+                }
+                bodyRows[body].emplace_back(a, kSide);
+            }
+        };
         for (label a = 0; a < n; ++a)
         {
-            const contact& ca = contacts[cs[a]];
-            for (label b = a; b < n; ++b)
-            {
-                const contact& cb = contacts[cs[b]];
-                scalar sum = 0;
-                auto add = [&](label bodyA, const row& ra, label bodyB,
-                               const row& rb)
-                {
-                    if (bodyA == bodyB && bodyA >= 0 && !fixed[bodyA])
-                    {
-                        sum += (ra.lin & rb.wLin) + (ra.ang & rb.wAng);
-                    }
-                };
-                add(ca.i, rowsI[a], cb.i, rowsI[b]);
-                add(ca.i, rowsI[a], cb.k, rowsK[b]);
-                add(ca.k, rowsK[a], cb.i, rowsI[b]);
-                add(ca.k, rowsK[a], cb.k, rowsK[b]);
-                A(a, b) = sum;
-                A(b, a) = sum;
-            }
+            const contact& c = contacts[cs[a]];
+            addRow(c.i, a, false);
+            addRow(c.k, a, true);
         }
+        triplets.clear();
+        for (const label body : touched)
+        {
+            const auto& list = bodyRows[body];
+            for (const auto& ra : list)
+            {
+                const row& Ra = ra.second ? rowsK[ra.first] : rowsI[ra.first];
+                for (const auto& rb : list)
+                {
+                    const row& Rb =
+                        rb.second ? rowsK[rb.first] : rowsI[rb.first];
+                    triplets.emplace_back
+                    (
+                        ra.first, rb.first,
+                        (Ra.lin & Rb.wLin) + (Ra.ang & Rb.wAng)
+                    );
+                }
+            }
+            bodyRows[body].clear();
+        }
+        Eigen::SparseMatrix<double> A(n, n);
+        A.setFromTriplets(triplets.begin(), triplets.end());
 
         // B: d'' without contact forces (eq 28), plus the step term
         Eigen::VectorXd B(n);
@@ -258,8 +292,18 @@ Foam::rbd::restingContactSolver::solve
             B(a) = ddGap + 2*(max(c.gap, scalar(0)) + h*vn)/sqr(h);
         }
 
+        // The active set to start from: the contacts that carried a force
+        // in the previous solve (guess only: the solution does not depend
+        // on it)
+        guess.assign(n, false);
+        for (label a = 0; a < n; ++a)
+        {
+            const auto it = active.find(pairKey(contacts[cs[a]]));
+            guess[a] = it != active.end() ? it->second : B(a) < 0;
+        }
+
         phi.resize(n);
-        const lcpResult lr = solver_->solve(A, B, phi);
+        const lcpResult lr = solver_->solve(A, B, guess, phi);
         res.iterations += lr.iterations;
         res.converged = res.converged && lr.converged;
         res.maxViolation = max(res.maxViolation, lr.maxViolation);
@@ -282,6 +326,17 @@ Foam::rbd::restingContactSolver::solve
             phiAll[island[a]] = phi(a);
         }
     }
+
+    auto recordActive = [&]()
+    {
+        active.clear();
+        forAll(contacts, ci)
+        {
+            bool& a = active[pairKey(contacts[ci])];
+            a = a || phiAll[ci] > 0;
+        }
+    };
+    recordActive();
 
     if (anyFriction)
     {
@@ -359,6 +414,8 @@ Foam::rbd::restingContactSolver::solve
             }
         }
     }
+
+    recordActive();
 
     // Total: external + friction + normal
     forAll(F, b)
