@@ -192,7 +192,15 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             {
                 rhs(k) = -b(members[k]);
             }
-            const Eigen::VectorXd zF(ldlt.solve(rhs));
+            // Iterative refinement with the same factor: the solution of
+            // A_FF f = -b_F itself where that system is consistent (the
+            // compliance eps f would otherwise let a loaded stack sink)
+            Eigen::VectorXd zF(ldlt.solve(rhs));
+            for (label refine = 0; refine < 2; ++refine)
+            {
+                const Eigen::VectorXd r(rhs - (AFF*zF - eps*zF));
+                zF += ldlt.solve(r);
+            }
             for (label k = 0; k < m; ++k)
             {
                 z(members[k]) = zF(k);
@@ -216,10 +224,15 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
 
         if (infeasible.empty())
         {
-            // The contacts in F carry w_F = -eps f_F: a compliance of
-            // round-off size, unless f runs away like 1/eps because no
-            // finite f solves the LCP (bodies driven into each other)
-            result.converged = eps*fRef <= std::sqrt(tolerance_)*bRef;
+            // w_F = 0 up to round-off, unless A_FF f = -b_F has no
+            // solution: no finite f solves the LCP (bodies driven into
+            // each other), and f runs away like 1/eps
+            scalar wF = 0;
+            for (const label i : members)
+            {
+                wF = max(wF, mag(w(i)));
+            }
+            result.converged = wF <= std::sqrt(tolerance_)*bRef;
             break;
         }
 

@@ -12,7 +12,7 @@ Foam::autoPtr<Foam::rbd::lcpSolver> Foam::rbd::lcpSolver::New
     const dictionary& dict
 )
 {
-    const word solverType(dict.getOrDefault<word>("lcpSolver", "baraff"));
+    const word solverType(dict.getOrDefault<word>("lcpSolver", "blockPivoting"));
 
     Info<< "Selecting LCP solver " << solverType << endl;
 

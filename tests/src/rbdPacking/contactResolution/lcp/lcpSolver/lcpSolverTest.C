@@ -12,10 +12,10 @@ using namespace lcpTest;
 
 // * * * * * * * * * * * * * * * * Selection * * * * * * * * * * * * * * * //
 
-TEST(lcpSolver, selectsBaraffByDefault)
+TEST(lcpSolver, selectsBlockPivotingByDefault)
 {
     const autoPtr<rbd::lcpSolver> solver = rbd::lcpSolver::New(parse(""));
-    EXPECT_EQ(solver->type(), "baraff");
+    EXPECT_EQ(solver->type(), "blockPivoting");
 }
 
 
