@@ -4,6 +4,7 @@
 
 #include "simulationControls.H"
 #include "dictionaryChecks.H"
+#include "lcpSolver.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -28,17 +29,16 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
     dict(d)
 {
-    checkKnownEntries
-    (
-        d,
-        {
-            "deltaT", "endTime", "gravity", "restingVelocity",
-            "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
-            "restitutionSweeps", "maxSweeps", "sleepVelocity", "sleepTime",
-            "settleTime", "settleEnergy", "logInterval", "lcpSolver",
-            "baraffCoeffs", "projectedGaussSeidelCoeffs", "enumerationCoeffs"
-        }
-    );
+    wordList known
+    {
+        "deltaT", "endTime", "gravity", "restingVelocity",
+        "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
+        "restitutionSweeps", "maxSweeps", "sleepVelocity", "sleepTime",
+        "settleTime", "settleEnergy", "logInterval", "lcpSolver"
+    };
+    // <name>Coeffs of every LCP solver there is
+    known.append(lcpSolver::coeffsNames());
+    checkKnownEntries(d, known);
 
     if (proximity > 1)
     {

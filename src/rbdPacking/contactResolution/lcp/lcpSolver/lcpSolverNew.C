@@ -36,4 +36,15 @@ Foam::autoPtr<Foam::rbd::lcpSolver> Foam::rbd::lcpSolver::New
 }
 
 
+Foam::wordList Foam::rbd::lcpSolver::coeffsNames()
+{
+    wordList names(dictionaryConstructorTablePtr_->sortedToc());
+    for (word& name : names)
+    {
+        name += "Coeffs";
+    }
+    return names;
+}
+
+
 // ************************************************************************* //
