@@ -491,7 +491,11 @@ void Foam::rbd::packedBed::write() const
 
     bedOutput out(runTime_.path(), tube_, shape, w.bodies());
     out.writePellets();
-    const scalar eps = out.writeProfiles(H, radialBins_, axialBins_);
+    const dictionary analysis
+    (
+        out.writeProfiles(H, radialBins_, axialBins_)
+    );
+    const scalar eps = analysis.get<scalar>("bulkPorosity");
     out.writeSTL(caseSettings.binarySTL(), caseSettings.pelletScale());
 
     dictionary summary;
@@ -503,6 +507,32 @@ void Foam::rbd::packedBed::write() const
     summary.add("diameterRatio", tube_.diameter()/shape.diameter());
     summary.add("bulkPorosity", eps);
     summary.add("porosityHeight", H);
+    // The published bulk porosities for this shape at N = dt/dpv
+    {
+        dictionary correlationsDict;
+        for
+        (
+            const Tuple2<word, scalar>& c
+          : correlations::bulkPorosities
+            (
+                correlations::familyOf(shape.type()),
+                tube_.diameter()/shape.volumeEquivalentDiameter(),
+                shape.sphericity()
+            )
+        )
+        {
+            correlationsDict.add(c.first(), c.second());
+        }
+        summary.add("bulkPorosityCorrelations", correlationsDict);
+    }
+    // R^2 and RMSE of the radial profile against the correlations
+    if (analysis.found("radialCorrelations"))
+    {
+        summary.add
+        (
+            "radialCorrelations", analysis.subDict("radialCorrelations")
+        );
+    }
     summary.add("bedHeight", bedHeight());
     // Porosity of the whole bed, floor to top: every pellet lies in it
     summary.add

@@ -222,6 +222,64 @@ Foam::scalarField Foam::rbd::bedVoidage::axialProfile
 }
 
 
+void Foam::rbd::bedVoidage::sphereCorrelations
+(
+    const scalarField& r,
+    const scalar dp,
+    scalarField& deKlerk,
+    scalarField& mueller
+) const
+{
+    const scalarField zWall((R_ - r)/dp);
+    const scalar epsBulk = bulkPorosity();
+    const scalar N = 2*R_/dp;
+
+    deKlerk = correlations::evaluate
+    (
+        zWall,
+        [epsBulk](scalar z){ return correlations::deKlerk(z, epsBulk); }
+    );
+    mueller = correlations::evaluate
+    (
+        zWall,
+        [N](scalar z){ return correlations::mueller(z, N); }
+    );
+}
+
+
+Foam::dictionary Foam::rbd::bedVoidage::sphereRadialFits
+(
+    const label nBins,
+    const scalar dp
+) const
+{
+    const scalarField eps(radialProfile(nBins));
+    scalarField deKlerk, mueller;
+    sphereCorrelations(radialBinCentres(nBins), dp, deKlerk, mueller);
+
+    const auto fit = [&eps](const scalarField& ref)
+    {
+        dictionary d;
+        const scalar r2 = correlations::rSquared(eps, ref);
+        const scalar e = correlations::rmse(eps, ref);
+        if (!std::isnan(r2))
+        {
+            d.add("rSquared", r2);
+        }
+        if (!std::isnan(e))
+        {
+            d.add("rmse", e);
+        }
+        return d;
+    };
+
+    dictionary fits;
+    fits.add("deKlerk", fit(deKlerk));
+    fits.add("mueller", fit(mueller));
+    return fits;
+}
+
+
 void Foam::rbd::bedVoidage::writeRadialProfile
 (
     Ostream& os,
@@ -239,16 +297,7 @@ void Foam::rbd::bedVoidage::writeRadialProfile
     scalarField deKlerk, mueller;
     if (sphereCorrelations)
     {
-        deKlerk = correlations::evaluate
-        (
-            zWall,
-            [epsBulk](scalar z){ return correlations::deKlerk(z, epsBulk); }
-        );
-        mueller = correlations::evaluate
-        (
-            zWall,
-            [N](scalar z){ return correlations::mueller(z, N); }
-        );
+        this->sphereCorrelations(r, dp, deKlerk, mueller);
     }
 
     const int oldPrecision = os.precision(10);
@@ -286,6 +335,52 @@ void Foam::rbd::bedVoidage::writeRadialProfile
             os  << ' ' << deKlerk[k] << ' ' << mueller[k];
         }
         os  << nl;
+    }
+
+    os.precision(oldPrecision);
+}
+
+
+void Foam::rbd::bedVoidage::writeSphereCorrelations
+(
+    Ostream& os,
+    const label nPoints,
+    const scalar dp
+) const
+{
+    if (nPoints < 2)
+    {
+        FatalErrorInFunction
+            << "radial correlations: number of points " << nPoints
+            << " is not >= 2" << exit(FatalError);
+    }
+    // From the wall inwards: r = R (1 - k/(nPoints - 1))
+    scalarField r(nPoints);
+    forAll(r, k)
+    {
+        r[k] = R_*(1 - scalar(k)/(nPoints - 1));
+    }
+    scalarField deKlerk, mueller;
+    sphereCorrelations(r, dp, deKlerk, mueller);
+
+    const int oldPrecision = os.precision(10);
+
+    os  << "# Radial void fraction correlations for spheres, from the wall"
+        << " to the axis" << nl
+        << "# tube radius R = " << R_ << " m, dp = " << dp
+        << " m, N = dt/dp = " << 2*R_/dp << nl
+        << "# deKlerk: de Klerk 2003 (recalled form), eps_b = bulk porosity "
+        << bulkPorosity() << " (z from " << zLow_ << " to " << zHigh_
+        << " m)" << nl
+        << "# Mueller: Mueller 1992 (recalled form, suspect for N < 10:"
+        << " see correlations.H), eps_b = "
+        << correlations::muellerBulk(2*R_/dp) << nl
+        << "# r [m]  (R-r)/dp [-]  deKlerk [-]  Mueller [-]" << nl;
+
+    forAll(r, k)
+    {
+        os  << r[k] << ' ' << (R_ - r[k])/dp << ' ' << deKlerk[k] << ' '
+            << mueller[k] << nl;
     }
 
     os.precision(oldPrecision);
@@ -336,6 +431,11 @@ void Foam::rbd::bedVoidage::write
     {
         OFstream os(dir/"axialPorosity.dat");
         writeAxialProfile(os, nAxialBins);
+    }
+    if (sphereCorrelations)
+    {
+        OFstream os(dir/"radialCorrelations.dat");
+        writeSphereCorrelations(os, correlationPoints, dp);
     }
 }
 

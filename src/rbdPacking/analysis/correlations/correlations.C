@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "correlations.H"
+#include "DynamicList.H"
 #include "error.H"
 #include "mathematicalConstants.H"
 
@@ -90,6 +91,60 @@ Foam::scalar Foam::rbd::correlations::benyahiaONeill
 )
 {
     return 0.1504 + 0.2024/phi + 1.0814/sqr(N + 0.1226);
+}
+
+
+Foam::rbd::correlations::pelletFamily Foam::rbd::correlations::familyOf
+(
+    const word& shapeType
+)
+{
+    if (shapeType == "sphere")
+    {
+        return pelletFamily::sphere;
+    }
+    if (shapeType == "cylinder")
+    {
+        return pelletFamily::cylinder;
+    }
+    return pelletFamily::other;
+}
+
+
+Foam::List<Foam::Tuple2<Foam::word, Foam::scalar>>
+Foam::rbd::correlations::bulkPorosities
+(
+    const pelletFamily family,
+    const scalar N,
+    const scalar phi
+)
+{
+    DynamicList<Tuple2<word, scalar>> values(4);
+    const auto add = [&values](const word& name, const scalar eps)
+    {
+        if (!std::isnan(eps))
+        {
+            values.append(Tuple2<word, scalar>(name, eps));
+        }
+    };
+
+    switch (family)
+    {
+        case pelletFamily::sphere:
+            add("dixon", dixonSpheres(N));
+            add("foumeny", foumenySpheres(N));
+            add("benyahiaONeill", benyahiaONeillSpheres(N));
+            break;
+        case pelletFamily::cylinder:
+            add("dixon", dixonCylinders(N));
+            add("benyahiaONeill", benyahiaONeillCylinders(N));
+            break;
+        case pelletFamily::other:
+            break;
+    }
+    add("benyahiaONeillAnyShape", benyahiaONeill(N, phi));
+
+    return List<Tuple2<word, scalar>>(std::move(values));
 }
 
 

@@ -65,7 +65,7 @@ void Foam::rbd::bedOutput::writePellets() const
 }
 
 
-Foam::scalar Foam::rbd::bedOutput::writeProfiles
+Foam::dictionary Foam::rbd::bedOutput::writeProfiles
 (
     const scalar H,
     const label radialBins,
@@ -90,7 +90,14 @@ Foam::scalar Foam::rbd::bedOutput::writeProfiles
     mkDir(dir_);
     voidage.write(dir_, radialBins, axialBins, shape_.diameter(), true);
 
-    return voidage.bulkPorosity();
+    dictionary analysis;
+    analysis.add("bulkPorosity", voidage.bulkPorosity());
+    analysis.add
+    (
+        "radialCorrelations",
+        voidage.sphereRadialFits(radialBins, shape_.diameter())
+    );
+    return analysis;
 }
 
 

@@ -12,6 +12,8 @@
 #include "OSspecific.H"
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <string>
@@ -302,12 +304,141 @@ TEST(bedVoidage, writesProfiles)
     EXPECT_EQ(axialData[0].size(), 2u);
     EXPECT_NEAR(axialData[0][0], 0.25, 1e-12);
 
-    // Both files into a directory
+    // The files into a directory: the correlations only for spheres
     const fileName dir("bedVoidageTest.tmp");
     rmDir(dir);
     bed.write(dir, 10, 8, 2*a, true);
     EXPECT_TRUE(isFile(dir/"radialPorosity.dat"));
     EXPECT_TRUE(isFile(dir/"axialPorosity.dat"));
+    EXPECT_TRUE(isFile(dir/"radialCorrelations.dat"));
+    rmDir(dir);
+    bed.write(dir, 10, 8, 2*a, false);
+    EXPECT_TRUE(isFile(dir/"radialPorosity.dat"));
+    EXPECT_FALSE(isFile(dir/"radialCorrelations.dat"));
+    rmDir(dir);
+}
+
+
+TEST(bedVoidage, sphereRadialFitsAgainstProfile)
+{
+    // N = 5.6: the statistics of the profile against the correlations
+    // evaluated at the bin centres' wall distance
+    const scalar a = 0.5, R = 2.8, dp = 2*a;
+    const pointField c(randomBed(R, a, 0, 4, 30, 7));
+    const rbd::sphereSolidSet s(c, a);
+    const rbd::bedVoidage bed(s, R, 4);
+
+    const label nBins = 25;
+    const scalarField eps(bed.radialProfile(nBins));
+    const scalarField r(bed.radialBinCentres(nBins));
+    scalarField deKlerk(nBins), mueller(nBins);
+    forAll(r, k)
+    {
+        const scalar z = (R - r[k])/dp;
+        deKlerk[k] = rbd::correlations::deKlerk(z, bed.bulkPorosity());
+        mueller[k] = rbd::correlations::mueller(z, 2*R/dp);
+    }
+
+    const dictionary fits(bed.sphereRadialFits(nBins, dp));
+    const dictionary& dK = fits.subDict("deKlerk");
+    const dictionary& M = fits.subDict("mueller");
+    EXPECT_NEAR
+    (
+        dK.get<scalar>("rSquared"),
+        rbd::correlations::rSquared(eps, deKlerk),
+        1e-12
+    );
+    EXPECT_NEAR
+    (
+        dK.get<scalar>("rmse"), rbd::correlations::rmse(eps, deKlerk), 1e-12
+    );
+    EXPECT_NEAR
+    (
+        M.get<scalar>("rSquared"),
+        rbd::correlations::rSquared(eps, mueller),
+        1e-12
+    );
+    EXPECT_NEAR
+    (
+        M.get<scalar>("rmse"), rbd::correlations::rmse(eps, mueller), 1e-12
+    );
+
+    // The header of radialPorosity.dat prints the same numbers
+    OStringStream os;
+    bed.writeRadialProfile(os, nBins, dp, true);
+    OStringStream expected;
+    expected.precision(10);
+    expected
+        << "R^2 = " << dK.get<scalar>("rSquared")
+        << ", RMSE = " << dK.get<scalar>("rmse");
+    EXPECT_NE(os.str().find(expected.str()), std::string::npos)
+        << expected.str();
+
+    // An empty tube: eps = 1 everywhere, R^2 undefined and left out
+    const rbd::sphereSolidSet none(pointField(), a);
+    const dictionary emptyFits
+    (
+        rbd::bedVoidage(none, R, 4).sphereRadialFits(nBins, dp)
+    );
+    EXPECT_FALSE(emptyFits.subDict("deKlerk").found("rSquared"));
+    EXPECT_TRUE(emptyFits.subDict("deKlerk").found("rmse"));
+
+    // Mueller's form is undefined below N = 2.61: no statistics
+    const rbd::bedVoidage narrow(s, 1.2, 4);
+    const dictionary narrowFits(narrow.sphereRadialFits(nBins, dp));
+    EXPECT_TRUE(narrowFits.subDict("mueller").empty());
+    EXPECT_TRUE(narrowFits.subDict("deKlerk").found("rmse"));
+}
+
+
+TEST(bedVoidage, writesSphereCorrelations)
+{
+    const scalar a = 0.5, R = 2.8, dp = 2*a;
+    const pointField c(randomBed(R, a, 0, 4, 30, 5));
+    const rbd::sphereSolidSet s(c, a);
+    const rbd::bedVoidage bed(s, R, 4);
+
+    OStringStream os;
+    bed.writeSphereCorrelations(os, 11, dp);
+    const auto data = rows(os.str());
+    ASSERT_EQ(data.size(), 11u);
+
+    // From the wall (both correlations 1 there) to the axis
+    EXPECT_NEAR(data.front()[0], R, 1e-12);
+    EXPECT_NEAR(data.front()[1], 0, 1e-12);
+    EXPECT_NEAR(data.front()[2], 1, 1e-12);
+    EXPECT_NEAR(data.front()[3], 1, 1e-12);
+    EXPECT_NEAR(data.back()[0], 0, 1e-12);
+    EXPECT_NEAR(data.back()[1], R/dp, 1e-12);
+    for (const auto& row : data)
+    {
+        ASSERT_EQ(row.size(), 4u);
+        EXPECT_NEAR(row[1], (R - row[0])/dp, 1e-9);
+        EXPECT_NEAR
+        (
+            row[2],
+            rbd::correlations::deKlerk(row[1], bed.bulkPorosity()),
+            1e-9
+        );
+        EXPECT_NEAR
+        (
+            row[3], rbd::correlations::mueller(row[1], 2*R/dp), 1e-9
+        );
+    }
+
+    // The file has the documented number of points
+    const fileName dir("bedVoidageCorrelationsTest.tmp");
+    rmDir(dir);
+    bed.write(dir, 10, 8, dp, true);
+    std::ifstream is(dir/"radialCorrelations.dat");
+    const std::string text
+    (
+        (std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>()
+    );
+    EXPECT_EQ
+    (
+        rows(text).size(), size_t(rbd::bedVoidage::correlationPoints)
+    );
     rmDir(dir);
 }
 
@@ -325,5 +456,14 @@ TEST(bedVoidageDeath, rejectsBadBinsAndTube)
         rbd::bedVoidage(s, 1, 2, 2),
         ::testing::ExitedWithCode(1),
         "zHigh > zLow"
+    );
+    EXPECT_EXIT
+    (
+        {
+            OStringStream os;
+            rbd::bedVoidage(s, 1, 2).writeSphereCorrelations(os, 1, 1);
+        },
+        ::testing::ExitedWithCode(1),
+        "number of points 1 is not >= 2"
     );
 }
