@@ -40,6 +40,7 @@ Foam::rbd::blockPivotingLCP::blockPivotingLCP(const dictionary& coeffs)
         getLabelOrDefault(coeffs, "fallbackIterations", 10, 1)
     ),
     fallbackSize_(getLabelOrDefault(coeffs, "fallbackSize", 400, 0)),
+    smoothingSweeps_(getLabelOrDefault(coeffs, "smoothingSweeps", 10, 1)),
     fallback_(new baraffLCP(dictionary()))
 {
     checkKnownEntries
@@ -47,7 +48,7 @@ Foam::rbd::blockPivotingLCP::blockPivotingLCP(const dictionary& coeffs)
         coeffs,
         {
             "tolerance", "regularisation", "maxIterations",
-            "fallbackIterations", "fallbackSize"
+            "fallbackIterations", "fallbackSize", "smoothingSweeps"
         }
     );
 }
@@ -97,6 +98,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     }
     bool finite = b.allFinite();
     scalar diagMax = 0;
+    Eigen::VectorXd diag(Eigen::VectorXd::Zero(n));
     for (label j = 0; j < n && finite; ++j)
     {
         for (sparseMatrix::InnerIterator it(A, j); it; ++it)
@@ -104,6 +106,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             finite = finite && std::isfinite(it.value());
             if (it.row() == j)
             {
+                diag(j) = it.value();
                 diagMax = max(diagMax, it.value());
             }
         }
@@ -138,10 +141,18 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     Eigen::VectorXd z(n), w(n);
 
     // Judice-Pires: block exchanges while the number of infeasible
-    // contacts falls (or within three chances), else Murty's single
-    // exchange of the largest index
+    // contacts falls (or within three chances), else Gauss-Seidel
+    // smoothing picks the next active set
     label fewest = n + 1;
     label chances = 3;
+
+    // Gauss-Seidel smoothing, once block exchanges cycle
+    bool smoothing = false;
+    Eigen::VectorXd fs;
+    auto objective = [&](const Eigen::VectorXd& x)
+    {
+        return 0.5*x.dot(A*x) + 0.5*eps*x.squaredNorm() + b.dot(x);
+    };
 
     const label iterations =
         n <= fallbackSize_
@@ -236,23 +247,68 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             break;
         }
 
-        const label nInfeasible = infeasible.size();
-        if (nInfeasible < fewest)
+        if (!smoothing)
         {
-            fewest = nInfeasible;
-            chances = 3;
+            const label nInfeasible = infeasible.size();
+            if (nInfeasible < fewest)
+            {
+                fewest = nInfeasible;
+                chances = 3;
+            }
+            else if (chances > 0)
+            {
+                --chances;
+            }
+            else
+            {
+                smoothing = true;
+                fs = z.cwiseMax(0.0);
+            }
+            if (!smoothing)
+            {
+                for (const label i : infeasible)
+                {
+                    inF[i] = !inF[i];
+                }
+                continue;
+            }
         }
-        else if (chances > 0)
+
+        // Block exchanges cycle: from here on, projected Gauss-Seidel
+        // sweeps on the regularised problem pick the active set of the
+        // next subspace solve, started from the better of the last
+        // sweep's iterate and the projected subspace solution; both steps
+        // lower the convex objective 1/2 f.(A + eps I) f + b.f, so this
+        // converges (Silcowitz, Niebe and Erleben's PGS subspace
+        // minimisation)
         {
-            --chances;
+            const Eigen::VectorXd zp(z.cwiseMax(0.0));
+            if (objective(zp) < objective(fs))
+            {
+                fs = zp;
+            }
         }
-        else
+        Eigen::VectorXd ws(A*fs + b + eps*fs);
+        for (label sweep = 0; sweep < smoothingSweeps_; ++sweep)
         {
-            infeasible.assign(1, infeasible.back());
+            for (label j = 0; j < n; ++j)
+            {
+                const scalar fj = max(fs(j) - ws(j)/(diag(j) + eps), 0.0);
+                const scalar df = fj - fs(j);
+                if (df != 0)
+                {
+                    fs(j) = fj;
+                    for (sparseMatrix::InnerIterator it(A, j); it; ++it)
+                    {
+                        ws(it.row()) += it.value()*df;
+                    }
+                    ws(j) += eps*df;
+                }
+            }
         }
-        for (const label i : infeasible)
+        for (label i = 0; i < n; ++i)
         {
-            inF[i] = !inF[i];
+            inF[i] = fs(i) > 0;
         }
     }
 
@@ -268,6 +324,10 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     }
 
     f = z.cwiseMax(0.0);
+    if (!result.converged && smoothing && objective(fs) < objective(f))
+    {
+        f = fs;
+    }
     result.maxViolation = violation(A, b, f);
     return result;
 }
@@ -280,6 +340,7 @@ void Foam::rbd::blockPivotingLCP::writeCoeffs(Ostream& os) const
     os.writeEntry("maxIterations", maxIterations_);
     os.writeEntry("fallbackIterations", fallbackIterations_);
     os.writeEntry("fallbackSize", fallbackSize_);
+    os.writeEntry("smoothingSweeps", smoothingSweeps_);
 }
 
 
