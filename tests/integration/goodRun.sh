@@ -21,7 +21,7 @@ out="$tmp/a/postProcessing/rbdPackBed"
 check "summary, pellets.csv, profiles and STL written" \
     "[ -s $out/summary ] && [ -s $out/pellets.csv ] && [ -s $out/radialPorosity.dat ] && [ -s $out/axialPorosity.dat ] && [ -s $tmp/a/constant/triSurface/pellets.stl ]"
 check "log echoes effective settings with defaults" \
-    "grep -q 'restingVelocity' $tmp/a.log && grep -q 'Selecting LCP solver baraff' $tmp/a.log"
+    "grep -q 'restingVelocity' $tmp/a.log && grep -q 'Selecting LCP solver blockPivoting' $tmp/a.log"
 check "log ends with End" "tail -3 $tmp/a.log | grep -q '^End'"
 
 n="$(foamDictionary -entry pellets -value "$out/summary" 2>/dev/null)"

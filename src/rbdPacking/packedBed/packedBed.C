@@ -441,6 +441,7 @@ void Foam::rbd::packedBed::run()
                 << "  sleeping " << w.nSleeping()
                 << "  KE = " << KE << " J  steps " << w.stats().steps
                 << "  maxOverlap " << w.stats().maxOverlap << " m"
+                << "  lcpFailures " << w.stats().lcpFailures
                 << "  ExecutionTime = " << timer.elapsedTime() << " s"
                 << endl;
             nextLog += ctrl.logInterval;
@@ -451,6 +452,16 @@ void Foam::rbd::packedBed::run()
             break;
         }
     }
+
+    // The final contact list, for the contact treatments of the CFD case:
+    // the narrow phase skips pairs of sleeping pellets, so wake every
+    // pellet at rest and take one step of 1 ns (the pellets move by
+    // g (1 ns)^2/2, nothing)
+    forAll(w.bodies(), i)
+    {
+        w.setVelocity(i, Zero, Zero);
+    }
+    w.step(1e-9);
 
     wallTime_ = timer.elapsedTime();
     finalOverlap_ = w.currentMaxOverlap();
@@ -496,7 +507,9 @@ void Foam::rbd::packedBed::write() const
         out.writeProfiles(H, radialBins_, axialBins_)
     );
     const scalar eps = analysis.get<scalar>("bulkPorosity");
-    out.writeSTL(caseSettings.binarySTL(), caseSettings.pelletScale());
+    // Pellet surfaces with the contact treatment at the simulation's own
+    // touching contacts
+    const label nTreated = out.writeSTL(caseSettings, w.contacts());
 
     dictionary summary;
     summary.add("pellets", w.bodies().size());
@@ -550,14 +563,33 @@ void Foam::rbd::packedBed::write() const
     summary.add("lcpFailures", w.stats().lcpFailures);
     summary.add("kineticEnergy", w.kineticEnergy());
     summary.add("settled", Switch(settled_));
+    summary.add("contactTreatment", caseSettings.contactTreatment());
+    if (nTreated)
+    {
+        summary.add("treatedContacts", nTreated);
+    }
+    // Axis orientation of cylinders, rings, lobes, ... (orientation.dat)
+    out.writeOrientation(H, 18, summary);
     out.writeSummary(summary);
 
     Info<< "Bulk porosity below " << H << " m: " << eps << nl
         << "Largest interpenetration during the run: "
         << w.stats().maxOverlap << " m ("
         << 100*w.stats().maxOverlap/shape.diameter() << " % of dp)" << nl
-        << "Wrote " << out.directory() << " and " << out.stlFile() << nl
-        << endl;
+        << "Wrote " << out.directory() << " and " << out.stlFile();
+    if (nTreated)
+    {
+        Info<< " (" << caseSettings.contactTreatment() << " at " << nTreated
+            << " contacts)";
+    }
+    Info<< nl << endl;
+    if (summary.found("meanAxisAngle"))
+    {
+        Info<< "Pellet axis to tube axis: mean "
+            << summary.get<scalar>("meanAxisAngle") << " deg, order "
+            << "parameter " << summary.get<scalar>("axisOrderParameter")
+            << nl << endl;
+    }
 
     // The CFD case around the bed
     bedCaseWriter writer

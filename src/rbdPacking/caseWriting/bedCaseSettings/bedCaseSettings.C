@@ -11,7 +11,9 @@
 const Foam::wordList Foam::rbd::bedCaseSettings::contactTreatments
 ({
     "none",
-    "shrink"
+    "shrink",
+    "bridges",
+    "caps"
 });
 
 
@@ -24,6 +26,9 @@ const Foam::wordList Foam::rbd::bedCaseSettings::knownEntries
     "outletLength",
     "contactTreatment",
     "shrinkFactor",
+    "bridgeDiameter",
+    "capHeight",
+    "contactGap",
     "nu",
     "Re",
     "U",
@@ -138,6 +143,30 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
     shrinkFactor_
     (
         getInRangeOrDefault(options, "shrinkFactor", 0.99, 0.5, 1, "-")
+    ),
+    bridgeDiameter_
+    (
+        getInRangeOrDefault
+        (
+            options, "bridgeDiameter", 0.2*pelletDiameter,
+            1e-3*pelletDiameter, 0.5*pelletDiameter, "m"
+        )
+    ),
+    capHeight_
+    (
+        getInRangeOrDefault
+        (
+            options, "capHeight", 0.01*pelletDiameter,
+            1e-4*pelletDiameter, 0.1*pelletDiameter, "m"
+        )
+    ),
+    contactGap_
+    (
+        getInRangeOrDefault
+        (
+            options, "contactGap", 0.01*pelletDiameter,
+            0, 0.05*pelletDiameter, "m"
+        )
     ),
     nu_(getPositiveOrDefault(options, "nu", 1.5e-5, "m^2/s")),
     velocity_(0),
@@ -262,6 +291,18 @@ void Foam::rbd::bedCaseSettings::write(Ostream& os) const
     if (contactTreatment_ == "shrink")
     {
         os.writeEntry("shrinkFactor", shrinkFactor_);
+    }
+    if (contactTreatment_ == "bridges")
+    {
+        os.writeEntry("bridgeDiameter", bridgeDiameter_);
+    }
+    if (contactTreatment_ == "caps")
+    {
+        os.writeEntry("capHeight", capHeight_);
+    }
+    if (contactTreatment_ == "bridges" || contactTreatment_ == "caps")
+    {
+        os.writeEntry("contactGap", contactGap_);
     }
     os.writeEntry("nu", nu_);
     os.writeEntry("U", velocity_);

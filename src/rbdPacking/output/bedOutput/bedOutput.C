@@ -8,7 +8,9 @@
 #include "IOobject.H"
 #include "sphereSolidSet.H"
 #include "bedVoidage.H"
-#include "pelletMeshes.H"
+#include "meshSolidSet.H"
+#include "orientationStatistics.H"
+#include "contactGeometry.H"
 #include "stlIO.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -72,31 +74,41 @@ Foam::dictionary Foam::rbd::bedOutput::writeProfiles
     const label axialBins
 ) const
 {
-    if (!shape_.isSphere())
-    {
-        FatalErrorInFunction
-            << "Porosity profiles of '" << shape_.type() << "' pellets are "
-            << "not implemented yet" << exit(FatalError);
-    }
-
     pointField centres(bodies_.size());
+    tensorField rotations(bodies_.size());
     forAll(bodies_, i)
     {
         centres[i] = bodies_[i].x();
+        rotations[i] = bodies_[i].R();
     }
-    const sphereSolidSet spheres(centres, 0.5*shape_.diameter());
-    const bedVoidage voidage(spheres, tube_.radius(), H);
+    autoPtr<solidSet> solids;
+    if (shape_.isSphere())
+    {
+        solids.reset(new sphereSolidSet(centres, 0.5*shape_.diameter()));
+    }
+    else
+    {
+        solids.reset(new meshSolidSet(shape_.mesh(), centres, rotations));
+    }
+    const bedVoidage voidage(solids(), tube_.radius(), H);
 
     mkDir(dir_);
-    voidage.write(dir_, radialBins, axialBins, shape_.diameter(), true);
+    voidage.write
+    (
+        dir_, radialBins, axialBins, shape_.volumeEquivalentDiameter(),
+        shape_.isSphere()
+    );
 
     dictionary analysis;
     analysis.add("bulkPorosity", voidage.bulkPorosity());
-    analysis.add
-    (
-        "radialCorrelations",
-        voidage.sphereRadialFits(radialBins, shape_.diameter())
-    );
+    if (shape_.isSphere())
+    {
+        analysis.add
+        (
+            "radialCorrelations",
+            voidage.sphereRadialFits(radialBins, shape_.diameter())
+        );
+    }
     return analysis;
 }
 
@@ -107,19 +119,13 @@ void Foam::rbd::bedOutput::writeSTL
     const scalar scale
 ) const
 {
-    if (!shape_.isSphere())
-    {
-        FatalErrorInFunction
-            << "STL output of '" << shape_.type() << "' pellets is not "
-            << "implemented yet" << exit(FatalError);
-    }
     if (!(scale > 0))
     {
         FatalErrorInFunction
             << "Pellet scale must be > 0, not " << scale << exit(FatalError);
     }
     // Body frame: the centre of mass at the origin
-    triMesh body(pelletMeshes::sphere(shape_.diameter(), shape_.faces()));
+    triMesh body(shape_.mesh());
     if (scale != 1)
     {
         body.scale(scale);
@@ -135,6 +141,126 @@ void Foam::rbd::bedOutput::writeSTL
         }
     }
     commit(tmp, stl_);
+}
+
+
+Foam::List<Foam::rbd::triMesh> Foam::rbd::bedOutput::pelletSurfaces
+(
+    const bedCaseSettings& settings,
+    const UList<contact>& contacts,
+    label& nTreated
+) const
+{
+    const word& treatment = settings.contactTreatment();
+    triMesh body(shape_.mesh());
+    if (settings.pelletScale() != 1)
+    {
+        body.scale(settings.pelletScale());
+    }
+
+    DynamicList<triMesh> surfaces(bodies_.size());
+    for (const rigidBody& b : bodies_)
+    {
+        surfaces.append(body.transformed(b.R(), b.x()));
+    }
+
+    nTreated = 0;
+    if (treatment == "bridges" || treatment == "caps")
+    {
+        const scalar spacing =
+            treatment == "bridges"
+          ? settings.bridgeDiameter()
+          : 2*std::sqrt(settings.capHeight()*shape_.diameter());
+        const List<contact> touching
+        (
+            contactGeometry::touching
+            (
+                contacts, settings.contactGap(), spacing
+            )
+        );
+        nTreated = touching.size();
+
+        // Bridges: about 16 sides, faces from the cylinder generator
+        for (const contact& c : touching)
+        {
+            if (c.i < 0 || c.i >= bodies_.size() || c.k >= bodies_.size())
+            {
+                FatalErrorInFunction
+                    << "Contact of pellets " << c.i << " and " << c.k
+                    << " for a bed of " << bodies_.size() << " pellets"
+                    << exit(FatalError);
+            }
+            if (treatment == "bridges")
+            {
+                surfaces.append
+                (
+                    contactGeometry::bridge(c, settings.bridgeDiameter(), 200)
+                );
+            }
+            else
+            {
+                surfaces[c.i] = contactGeometry::cap
+                (
+                    surfaces[c.i], c.p, c.n, settings.capHeight()
+                );
+                if (c.k >= 0)
+                {
+                    surfaces[c.k] = contactGeometry::cap
+                    (
+                        surfaces[c.k], c.p, -c.n, settings.capHeight()
+                    );
+                }
+            }
+        }
+    }
+    return List<triMesh>(std::move(surfaces));
+}
+
+
+Foam::label Foam::rbd::bedOutput::writeSTL
+(
+    const bedCaseSettings& settings,
+    const UList<contact>& contacts
+) const
+{
+    label nTreated = 0;
+    const List<triMesh> surfaces(pelletSurfaces(settings, contacts, nTreated));
+
+    mkDir(stl_.path());
+    const fileName tmp(stl_ + ".tmp");
+    {
+        stlWriter writer(tmp, settings.binarySTL(), "pellets");
+        for (const triMesh& m : surfaces)
+        {
+            writer.write(m);
+        }
+    }
+    commit(tmp, stl_);
+    return nTreated;
+}
+
+
+void Foam::rbd::bedOutput::writeOrientation
+(
+    const scalar H,
+    const label nBins,
+    dictionary& summary
+) const
+{
+    if (!shape_.hasSymmetryAxis())
+    {
+        return;
+    }
+    pointField centres(bodies_.size());
+    tensorField rotations(bodies_.size());
+    forAll(bodies_, i)
+    {
+        centres[i] = bodies_[i].x();
+        rotations[i] = bodies_[i].R();
+    }
+    const orientationStatistics stats(centres, rotations, -GREAT, H);
+    stats.write(dir_, nBins);
+    stats.addTo(summary);
 }
 
 

@@ -7,6 +7,8 @@
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/clip.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/IO/STL.h>
@@ -441,6 +443,22 @@ Foam::string Foam::rbd::checkClosedSolid(const triMesh& mesh)
     }
 
     return string();
+}
+
+
+Foam::rbd::triMesh Foam::rbd::cgalMeshTools::clipByPlane
+(
+    const triMesh& mesh,
+    const point& p,
+    const vector& n
+)
+{
+    surfaceMesh sm = toSurfaceMesh(mesh);
+    const kernel::Plane_3 plane(n.x(), n.y(), n.z(), -(n & p));
+    PMP::clip(sm, plane, CGAL::parameters::clip_volume(true));
+    PMP::triangulate_faces(sm);
+    sm.collect_garbage();
+    return fromSurfaceMesh(sm);
 }
 
 

@@ -139,9 +139,15 @@ TEST(bedCaseSettingsDeath, rejectsBadValues)
     );
     EXPECT_EXIT
     (
-        make("contactTreatment bridges;"),
+        make("contactTreatment glue;"),
         ::testing::ExitedWithCode(1),
-        "one of none \\| shrink"
+        "one of none \\| shrink \\| bridges \\| caps"
+    );
+    EXPECT_EXIT
+    (
+        make("contactTreatment bridges; bridgeDiameter 0.008;"),
+        ::testing::ExitedWithCode(1),
+        "bridgeDiameter 0.008(.|\n)*allowed"
     );
     EXPECT_EXIT
     (
