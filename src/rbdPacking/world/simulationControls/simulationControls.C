@@ -5,6 +5,14 @@
 #include "simulationControls.H"
 #include "dictionaryChecks.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::rbd::simulationControls::contactModels
+({
+    "auto", "mesh"
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::simulationControls::simulationControls(const dictionary& d)
@@ -26,6 +34,10 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
     settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-")),
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
+    contactModel
+    (
+        getChoiceOrDefault(d, "contactModel", "auto", contactModels)
+    ),
     dict(d)
 {
     checkKnownEntries
@@ -36,7 +48,8 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
             "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
             "restitutionSweeps", "maxSweeps", "sleepVelocity", "sleepTime",
             "settleTime", "settleEnergy", "logInterval", "lcpSolver",
-            "baraffCoeffs", "projectedGaussSeidelCoeffs", "enumerationCoeffs"
+            "baraffCoeffs", "projectedGaussSeidelCoeffs", "enumerationCoeffs",
+            "contactModel"
         }
     );
 
@@ -74,6 +87,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("settleTime", settleTime);
     os.writeEntry("settleEnergy", settleEnergy);
     os.writeEntry("logInterval", logInterval);
+    os.writeEntry("contactModel", contactModel);
 }
 
 
