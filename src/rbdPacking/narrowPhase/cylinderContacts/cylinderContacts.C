@@ -106,15 +106,20 @@ void Foam::rbd::cylinderContacts::cylinderTube
               ? vector(c.x(), c.y(), 0) : vector(1, 0, 0)
             );
             vector w(normalTo(er, ax));
-            for (label iter = 0; iter < 5; ++iter)
+            for (label iter = 0; iter < 50; ++iter)
             {
                 const point p(c + a*w);
-                const scalar rho = tube::axialDistance(p);
-                if (rho < VSMALL)
+                if (tube::axialDistance(p) < VSMALL)
                 {
                     break;
                 }
-                w = normalTo(vector(p.x(), p.y(), 0), ax);
+                const vector wNew(normalTo(vector(p.x(), p.y(), 0), ax));
+                const scalar change = magSqr(wNew - w);
+                w = wNew;
+                if (change < 1e-20)
+                {
+                    break;
+                }
             }
             const vector u(ax ^ w);
             for (const vector& d : {w, u, -w, -u})

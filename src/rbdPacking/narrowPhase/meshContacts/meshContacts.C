@@ -12,6 +12,8 @@
 const Foam::scalar Foam::rbd::meshContacts::clusterAngle =
     20*Foam::constant::mathematical::pi/180;
 
+const Foam::label Foam::rbd::meshContacts::nTiers = 3;
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -339,7 +341,7 @@ void Foam::rbd::meshContacts::meshMesh
         }
     );
 
-    reduce(contacts, start, mergeDistance_);
+    reduce(contacts, start, mergeDistance_, 0.1*band_);
 }
 
 
@@ -434,7 +436,7 @@ void Foam::rbd::meshContacts::meshTube
         c.rk = point(p.x(), p.y(), 0);
         contacts.append(c);
     }
-    reduce(contacts, start, mergeDistance_);
+    reduce(contacts, start, mergeDistance_, 0.1*band_);
 
     start = contacts.size();
     for (const label v : wallPts)
@@ -461,7 +463,7 @@ void Foam::rbd::meshContacts::meshTube
         c.rk = p + gap*er;
         contacts.append(c);
     }
-    reduce(contacts, start, mergeDistance_);
+    reduce(contacts, start, mergeDistance_, 0.1*band_);
 }
 
 
@@ -599,7 +601,8 @@ void Foam::rbd::meshContacts::reduce
 (
     DynamicList<contact>& contacts,
     const label start,
-    const scalar mergeDistance
+    const scalar mergeDistance,
+    const scalar tier
 )
 {
     const label n = contacts.size() - start;
@@ -638,89 +641,109 @@ void Foam::rbd::meshContacts::reduce
     }
 
     contacts.setSize(start);
+    std::vector<label> level;
     for (const auto& g : groups)
     {
         const vector& nG = cs[g.front()].n;
+        const scalar g0 = cs[g.front()].gap;
 
-        // Tangential position relative to the deepest point
-        auto tang = [&](const label a)
+        for (label t = 0; t < (tier > 0 ? nTiers : 1); ++t)
         {
-            const vector d(cs[a].p - cs[g.front()].p);
-            return d - nG*(nG & d);
-        };
-
-        // 1. the deepest point
-        const label a0 = g.front();
-        contacts.append(cs[a0]);
-        if (g.size() == 1)
-        {
-            continue;
-        }
-
-        // 2. the farthest from it
-        label a1 = -1;
-        scalar best = mergeDistance;
-        for (const label a : g)
-        {
-            const scalar d = mag(tang(a));
-            if (d > best)
+            // The points of this tier of gaps (g is sorted by gap)
+            level.clear();
+            for (const label a : g)
             {
-                best = d;
-                a1 = a;
+                const scalar above = cs[a].gap - g0;
+                if (above >= t*tier && (above < (t + 1)*tier || tier <= 0))
+                {
+                    level.push_back(a);
+                }
             }
-        }
-        if (a1 < 0)
-        {
-            continue;
-        }
-        contacts.append(cs[a1]);
-        const vector e1(tang(a1));
-
-        // 3. the largest triangle
-        label a2 = -1;
-        best = mergeDistance*mag(e1);
-        vector side(Zero);
-        for (const label a : g)
-        {
-            const vector cr(e1 ^ tang(a));
-            const scalar area = mag(cr);
-            if (area > best)
+            if (level.empty())
             {
-                best = area;
-                a2 = a;
-                side = cr;
+                continue;
             }
-        }
-        if (a2 < 0)
-        {
-            continue;
-        }
-        contacts.append(cs[a2]);
+            const point& p0 = cs[level.front()].p;
 
-        // 4. the largest area added outside the triangle (0, 1, 2)
-        const vector corner[3] = {Zero, e1, tang(a2)};
-        const vector up(side/mag(side));
-        label a3 = -1;
-        best = mergeDistance*mag(e1);
-        for (const label a : g)
-        {
-            const vector q(tang(a));
-            for (label j = 0; j < 3; ++j)
+            // Tangential position relative to the deepest point
+            auto tang = [&](const label a)
             {
-                const vector& u = corner[j];
-                const vector& w = corner[(j + 1) % 3];
-                // Positive when q lies outside edge (u, w)
-                const scalar area = -(((w - u) ^ (q - u)) & up);
+                const vector d(cs[a].p - p0);
+                return d - nG*(nG & d);
+            };
+
+            // 1. the deepest point
+            contacts.append(cs[level.front()]);
+            if (level.size() == 1)
+            {
+                continue;
+            }
+
+            // 2. the farthest from it
+            label a1 = -1;
+            scalar best = mergeDistance;
+            for (const label a : level)
+            {
+                const scalar d = mag(tang(a));
+                if (d > best)
+                {
+                    best = d;
+                    a1 = a;
+                }
+            }
+            if (a1 < 0)
+            {
+                continue;
+            }
+            contacts.append(cs[a1]);
+            const vector e1(tang(a1));
+
+            // 3. the largest triangle
+            label a2 = -1;
+            best = mergeDistance*mag(e1);
+            vector side(Zero);
+            for (const label a : level)
+            {
+                const vector cr(e1 ^ tang(a));
+                const scalar area = mag(cr);
                 if (area > best)
                 {
                     best = area;
-                    a3 = a;
+                    a2 = a;
+                    side = cr;
                 }
             }
-        }
-        if (a3 >= 0)
-        {
-            contacts.append(cs[a3]);
+            if (a2 < 0)
+            {
+                continue;
+            }
+            contacts.append(cs[a2]);
+
+            // 4. the largest area added outside the triangle (0, 1, 2)
+            const vector corner[3] = {Zero, e1, tang(a2)};
+            const vector up(side/mag(side));
+            label a3 = -1;
+            best = mergeDistance*mag(e1);
+            for (const label a : level)
+            {
+                const vector q(tang(a));
+                for (label j = 0; j < 3; ++j)
+                {
+                    const vector& u = corner[j];
+                    const vector& w = corner[(j + 1) % 3];
+                    // Positive when q lies outside edge (u, w)
+                    const scalar area = -(((w - u) ^ (q - u)) & up);
+                    if (area > best)
+                    {
+                        best = area;
+                        a3 = a;
+                    }
+                }
+            }
+            if (a3 >= 0)
+            {
+                contacts.append(cs[a3]);
+            }
         }
     }
 }

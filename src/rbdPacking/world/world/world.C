@@ -325,6 +325,33 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         )
     );
 
+    // Eq 38 for a pair (k < 0: the container) whose bounding spheres are
+    // within the band: delta_t <= 0.2 lambda/|v_ik,max|, |v_ik,max| the
+    // largest relative surface speed |v_i - v_k| + (|omega_i| + |omega_k|)
+    // r_b (spheres: of the centres). Needed for meshes: a pair may be
+    // within the band of its bounding spheres before any feature is
+    // within the band of the surfaces, and no feature may then cross the
+    // band in one step.
+    auto eq38 = [&](const label i, const label k)
+    {
+        const bool kMoves = k >= 0 && !fixed_[k];
+        const vector vCentres
+        (
+            (fixed_[i] ? Zero : bodies_[i].v())
+          - (kMoves ? bodies_[k].v() : Zero)
+        );
+        scalar speed = mag(vCentres);
+        if (!centreGaps)
+        {
+            speed +=
+                (
+                    (fixed_[i] ? 0 : mag(bodies_[i].omega()))
+                  + (kMoves ? mag(bodies_[k].omega()) : 0)
+                )*rb_;
+        }
+        return speed > VSMALL ? 0.2*band_/speed : GREAT;
+    };
+
     // 2. Listed pairs apart by more than the band: their bounding spheres
     //    may approach until touching
     for (const labelPair& pr : neighbours_.pairs())
@@ -351,6 +378,10 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
             const scalar a = (fixed_[i] || fixed_[k]) ? g : 2*g;
             h = min(h, untilTouching(gap, u, a));
         }
+        else if (!centreGaps)
+        {
+            h = min(h, fixed_[i] ? eq38(k, i) : eq38(i, k));
+        }
     }
 
     // ... and the container, the same way
@@ -368,6 +399,10 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         {
             h = min(h, untilTouching(zGap, -b.v().z() + spin, g));
         }
+        else if (!centreGaps)
+        {
+            h = min(h, eq38(i, tubeBottom));
+        }
         const vector rho(b.x().x(), b.x().y(), 0);
         const scalar rhoMag = mag(rho);
         const scalar wallGap = R - rhoMag - rb_;
@@ -375,6 +410,10 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         {
             const scalar u = (b.v() & rho)/rhoMag + spin;
             h = min(h, untilTouching(wallGap, u, g));
+        }
+        else if (!centreGaps)
+        {
+            h = min(h, eq38(i, tubeWall));
         }
     }
 
@@ -386,28 +425,8 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
             collisionResolver::relativeVelocity(c, bodies_, fixed_)
         );
 
-        // Eq 38: delta_t <= 0.2 lambda/|v_ik,max|, the largest relative
-        // surface speed of the pair (spheres: of the centres; otherwise
-        // every surface point of i and k within r_b of its centre:
-        // |v_i - v_k| + (|omega_i| + |omega_k|) r_b)
-        const bool kMoves = c.k >= 0 && !fixed_[c.k];
-        const vector vCentres
-        (
-            (fixed_[c.i] ? Zero : bodies_[c.i].v())
-          - (kMoves ? bodies_[c.k].v() : Zero)
-        );
-        const scalar speed =
-            centreGaps
-          ? mag(vCentres)
-          : mag(vCentres)
-          + (
-                (fixed_[c.i] ? 0 : mag(bodies_[c.i].omega()))
-              + (kMoves ? mag(bodies_[c.k].omega()) : 0)
-            )*rb_;
-        if (speed > VSMALL)
-        {
-            h = min(h, 0.2*band_/speed);
-        }
+        // Eq 38 for the pair of every contact
+        h = min(h, eq38(c.i, c.k));
 
         // Approaching contacts stop at the touching gap
         if (c.gap > touch_)
