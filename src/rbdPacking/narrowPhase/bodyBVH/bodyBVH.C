@@ -199,6 +199,37 @@ Foam::rbd::bodyBVH::bodyBVH(const triMesh& mesh, const label leafSize)
             ((pts[opposite(e.f2, e)] - pts[e.a]) & normals_[e.f1]) < 0;
         e.feature = sharp && convex;
     }
+
+    // Per leaf: its points and feature edges, each once
+    leafPoints_.setSize(nodes_.size());
+    leafEdges_.setSize(nodes_.size());
+    forAll(nodes_, n)
+    {
+        const node& nd = nodes_[n];
+        if (!nd.leaf())
+        {
+            continue;
+        }
+        DynamicList<label> ps(3*nd.count), fe(3*nd.count);
+        for (label j = nd.first; j < nd.first + nd.count; ++j)
+        {
+            const label f = order_[j];
+            for (label q = 0; q < 3; ++q)
+            {
+                if (!ps.found(fs[f][q]))
+                {
+                    ps.append(fs[f][q]);
+                }
+                const label e = faceEdges_[f][q];
+                if (edges_[e].feature && !fe.found(e))
+                {
+                    fe.append(e);
+                }
+            }
+        }
+        leafPoints_[n].transfer(ps);
+        leafEdges_[n].transfer(fe);
+    }
 }
 
 

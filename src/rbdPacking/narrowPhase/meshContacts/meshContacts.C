@@ -4,8 +4,6 @@
 
 #include "meshContacts.H"
 #include <algorithm>
-#include <cstdint>
-#include <unordered_set>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -37,11 +35,6 @@ namespace
 
     //- Edges closer to parallel than this (sine) give no edge/edge contact
     const scalar parallelSin = 1e-3;
-
-    inline std::uint64_t key(const label a, const label b)
-    {
-        return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-    }
 
     //- Projection of p onto the plane of triangle (a, b, c) falls inside
     bool projectsInside
@@ -92,6 +85,7 @@ Foam::rbd::meshContacts::meshContacts(const triMesh& mesh, const scalar band)
     bvh_(mesh),
     band_(band),
     depth_(band),
+    radius_(mesh.boundingRadius()),
     mergeDistance_(1e-3*mesh.boundingRadius()),
     moved_(mesh.nPoints()),
     stamp_(mesh.nPoints(), -1),
@@ -129,7 +123,16 @@ void Foam::rbd::meshContacts::meshMesh
     const vector wi(bi.omega());
     const vector wk(bk.omega());
 
-    std::unordered_set<std::uint64_t> seenIK, seenKI, seenEE;
+    // Bounding spheres apart by more than the band: nothing to find
+    if (magSqr(bi.x() - bk.x()) >= sqr(2*radius_ + band_))
+    {
+        return;
+    }
+
+    // A feature pair may be met in several leaf pairs (a point or an edge
+    // shared by two leaves): the duplicate contacts coincide, and reduce()
+    // keeps one of them (it drops points within mergeDistance of a kept
+    // one), which is cheaper than remembering the pairs seen
 
     // World contact from a point on i (pI) and one on k (pK), frame of k,
     // with the normal nK (frame of k) and its rate nDot (world)
@@ -157,13 +160,8 @@ void Foam::rbd::meshContacts::meshMesh
     };
 
     // Vertex v of i over face f of k
-    auto vertexOfI = [&](const label v, const label f)
+    auto vertexOfI = [&](const label v, const point& p, const label f)
     {
-        if (!seenIK.insert(key(v, f)).second)
-        {
-            return;
-        }
-        const point& p = moved(v, R, t);
         const triFace& tf = fs[f];
         const vector& n = nf[f];
         const scalar s = (p - pts[tf[0]]) & n;
@@ -193,13 +191,8 @@ void Foam::rbd::meshContacts::meshMesh
     };
 
     // Vertex v of k over face f of i
-    auto vertexOfK = [&](const label v, const label f)
+    auto vertexOfK = [&](const label v, const point& p, const label f)
     {
-        if (!seenKI.insert(key(v, f)).second)
-        {
-            return;
-        }
-        const point& p = pts[v];
         const triFace& tf = fs[f];
         const point& a = moved(tf[0], R, t);
         const vector n(R & nf[f]);
@@ -237,14 +230,6 @@ void Foam::rbd::meshContacts::meshMesh
     {
         const bodyBVH::edgeInfo& eI = es[ei];
         const bodyBVH::edgeInfo& eK = es[ek];
-        if (!eI.feature || !eK.feature)
-        {
-            return;
-        }
-        if (!seenEE.insert(key(ei, ek)).second)
-        {
-            return;
-        }
         const point& p1 = moved(eI.a, R, t);
         const vector d1(moved(eI.b, R, t) - p1);
         const point& p2 = pts[eK.a];
@@ -308,6 +293,58 @@ void Foam::rbd::meshContacts::meshMesh
         add(cI, cK, n, gap, nDot);
     };
 
+    // A vertex p of one body (neighbour points q, frame of k) against a
+    // feature edge (a, d, cone u1, u2, outward o) of the other, the closest
+    // point inside the edge: n = +-(p - c)/|p - c| out of the edge, in the
+    // edge's normal cone, the vertex extreme along -n
+    auto vertexEdge =
+    [&](const point& p, const labelList& faces, const bool onI,
+        const point& a, const vector& d, const vector& u1, const vector& u2,
+        const vector& o, point& c, vector& n, scalar& gap)
+    {
+        const scalar dd = d & d;
+        const scalar s = ((p - a) & d)/dd;
+        if (s <= edgeTol || s >= 1 - edgeTol)
+        {
+            return false;
+        }
+        c = a + s*d;
+        const vector r(p - c);
+        const scalar dist = mag(r);
+        if (dist >= band_ || dist <= VSMALL)
+        {
+            return false;
+        }
+        n = r/dist;
+        gap = dist;
+        if ((n & o) < 0)
+        {
+            n = -n;
+            gap = -dist;
+            if (dist >= depth_)
+            {
+                return false;
+            }
+        }
+        if ((n & u1) > coneTol || (n & u2) > coneTol)
+        {
+            return false;
+        }
+        for (const label f : faces)
+        {
+            for (const label w : fs[f])
+            {
+                const point q(onI ? moved(w, R, t) : pts[w]);
+                const vector e(q - p);
+                if ((e & n) < -coneTol*mag(e))
+                {
+                    return false;
+                }
+            }
+        }
+        return true;
+    };
+
     bvh_.leafPairs
     (
         bvh_, R, t, band_,
@@ -315,26 +352,94 @@ void Foam::rbd::meshContacts::meshMesh
         {
             const bodyBVH::node& ni = nodes[li];
             const bodyBVH::node& nk = nodes[lk];
-            for (label a = ni.first; a < ni.first + ni.count; ++a)
+
+            // Points of i's leaf near k's leaf box, over k's faces
+            for (const label v : bvh_.leafPoints(li))
             {
-                const label fi = order[a];
+                const point& p = moved(v, R, t);
+                if (bvh_.boxDistance(lk, p) >= band_)
+                {
+                    continue;
+                }
                 for (label b = nk.first; b < nk.first + nk.count; ++b)
                 {
-                    const label fk = order[b];
-                    for (const label v : fs[fi])
+                    vertexOfI(v, p, order[b]);
+                }
+            }
+
+            // Points of k's leaf near i's leaf (its sphere), over i's faces
+            const point ci((R & ni.centre) + t);
+            for (const label v : bvh_.leafPoints(lk))
+            {
+                const point& p = pts[v];
+                if (magSqr(p - ci) >= sqr(ni.radius + band_))
+                {
+                    continue;
+                }
+                for (label a = ni.first; a < ni.first + ni.count; ++a)
+                {
+                    vertexOfK(v, p, order[a]);
+                }
+            }
+
+            for (const label ei : bvh_.leafEdges(li))
+            {
+                for (const label ek : bvh_.leafEdges(lk))
+                {
+                    edgeEdge(ei, ek);
+                }
+            }
+
+            // Vertices against edges (a vertex near an edge projects onto
+            // neither face; parallel edges give no edge/edge contact)
+            point cE;
+            vector nE;
+            scalar gE;
+            for (const label v : bvh_.leafPoints(li))
+            {
+                const point& p = moved(v, R, t);
+                if (bvh_.boxDistance(lk, p) >= band_)
+                {
+                    continue;
+                }
+                for (const label ek : bvh_.leafEdges(lk))
+                {
+                    const bodyBVH::edgeInfo& e = es[ek];
+                    if
+                    (
+                        vertexEdge
+                        (
+                            p, pf[v], true, pts[e.a], pts[e.b] - pts[e.a],
+                            e.u1, e.u2, e.outward, cE, nE, gE
+                        )
+                    )
                     {
-                        vertexOfI(v, fk);
+                        add(p, cE, nE, gE, wk ^ (Rk & nE));
                     }
-                    for (const label v : fs[fk])
+                }
+            }
+            for (const label v : bvh_.leafPoints(lk))
+            {
+                const point& p = pts[v];
+                if (magSqr(p - ci) >= sqr(ni.radius + band_))
+                {
+                    continue;
+                }
+                for (const label ei : bvh_.leafEdges(li))
+                {
+                    const bodyBVH::edgeInfo& e = es[ei];
+                    const point& a = moved(e.a, R, t);
+                    if
+                    (
+                        vertexEdge
+                        (
+                            p, pf[v], false, a, moved(e.b, R, t) - a,
+                            R & e.u1, R & e.u2, R & e.outward, cE, nE, gE
+                        )
+                    )
                     {
-                        vertexOfK(v, fi);
-                    }
-                    for (const label ei : bvh_.faceEdges()[fi])
-                    {
-                        for (const label ek : bvh_.faceEdges()[fk])
-                        {
-                            edgeEdge(ei, ek);
-                        }
+                        // Normal out of i's edge: from k to i is -nE
+                        add(cE, p, -nE, gE, wi ^ (Rk & -nE));
                     }
                 }
             }
