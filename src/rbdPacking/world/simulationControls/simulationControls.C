@@ -6,6 +6,14 @@
 #include "dictionaryChecks.H"
 #include "lcpSolver.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::rbd::simulationControls::contactModels
+({
+    "auto", "mesh"
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::simulationControls::simulationControls(const dictionary& d)
@@ -27,6 +35,10 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
     settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-")),
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
+    contactModel
+    (
+        getChoiceOrDefault(d, "contactModel", "auto", contactModels)
+    ),
     dict(d)
 {
     wordList known
@@ -34,7 +46,8 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
         "deltaT", "endTime", "gravity", "restingVelocity",
         "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
         "restitutionSweeps", "maxSweeps", "sleepVelocity", "sleepTime",
-        "settleTime", "settleEnergy", "logInterval", "lcpSolver"
+        "settleTime", "settleEnergy", "logInterval", "lcpSolver",
+        "contactModel"
     };
     // <name>Coeffs of every LCP solver there is
     known.append(lcpSolver::coeffsNames());
@@ -74,6 +87,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("settleTime", settleTime);
     os.writeEntry("settleEnergy", settleEnergy);
     os.writeEntry("logInterval", logInterval);
+    os.writeEntry("contactModel", contactModel);
 }
 
 

@@ -4,6 +4,9 @@
 
 #include "world.H"
 #include "sphereContacts.H"
+#include "cylinderContacts.H"
+#include "cylinder.H"
+#include "ring.H"
 #include "midpointIntegrator.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -49,6 +52,9 @@ Foam::rbd::world::world
     band_(controls.proximity*shape.boundingRadius()),
     touch_(controls.contactTolerance*shape.diameter()),
     slop_(controls.contactTolerance*shape.diameter()),
+    meshes_(),
+    hullRadius_(0),
+    hullHalfHeight_(0),
     bodies_(),
     fixed_(),
     slowTime_(),
@@ -67,13 +73,40 @@ Foam::rbd::world::world
     time_(0),
     stats_()
 {
-    if (!shape_.isSphere())
+    // Narrow phase by shape pair; contactModel mesh forces the meshes
+    const bool meshOnly = controls.contactModel == "mesh";
+    if (!shape_.isSphere() || meshOnly)
     {
-        FatalErrorInFunction
-            << "Pellet shape '" << shape_.type() << "': contacts between "
-            << "nonspherical pellets (triangle meshes) are not implemented "
-            << "yet; only 'sphere' can be packed in this version."
-            << exit(FatalError);
+        meshes_.reset(new meshContacts(shape_.mesh(), band_));
+    }
+    if (!meshOnly)
+    {
+        if (isA<cylinder>(shape_))
+        {
+            const cylinder& s = refCast<const cylinder>(shape_);
+            hullRadius_ = 0.5*s.diameter();
+            hullHalfHeight_ = 0.5*s.height();
+        }
+        else if (isA<ring>(shape_))
+        {
+            const ring& s = refCast<const ring>(shape_);
+            hullRadius_ = 0.5*s.diameter();
+            hullHalfHeight_ = 0.5*s.height();
+        }
+    }
+
+    Info<< "Narrow phase (contactModel " << controls.contactModel << "): ";
+    if (meshes_.valid())
+    {
+        Info<< "triangle meshes (" << shape_.mesh().nFaces()
+            << " faces, " << meshes_->bvh().nodes().size()
+            << " tree nodes) between pellets, "
+            << (hullRadius_ > 0 ? "exact " + shape_.type() : word("mesh"))
+            << " contacts with the container" << endl;
+    }
+    else
+    {
+        Info<< "exact sphere contacts" << endl;
     }
 }
 
@@ -108,6 +141,59 @@ void Foam::rbd::world::setVelocity
 }
 
 
+void Foam::rbd::world::pelletPair(const label i, const label k)
+{
+    const label start = contacts_.size();
+    if (meshes_.valid())
+    {
+        meshes_->meshMesh(i, bodies_[i], k, bodies_[k], contacts_);
+    }
+    else
+    {
+        contact c;
+        if
+        (
+            sphereContacts::sphereSphere
+            (
+                i, bodies_[i], rb_, k, bodies_[k], rb_, band_, c
+            )
+        )
+        {
+            contacts_.append(c);
+        }
+    }
+    for (label ci = start; ci < contacts_.size(); ++ci)
+    {
+        contacts_[ci].e = material_.restitution;
+        contacts_[ci].mu = material_.friction;
+    }
+}
+
+
+void Foam::rbd::world::pelletContainer(const label i)
+{
+    if (!meshes_.valid())
+    {
+        sphereContacts::sphereTube
+        (
+            i, bodies_[i], rb_, tube_, band_, contacts_
+        );
+    }
+    else if (hullRadius_ > 0)
+    {
+        cylinderContacts::cylinderTube
+        (
+            i, bodies_[i], hullRadius_, hullHalfHeight_, tube_, band_,
+            contacts_
+        );
+    }
+    else
+    {
+        meshes_->meshTube(i, bodies_[i], tube_, contacts_);
+    }
+}
+
+
 void Foam::rbd::world::findContacts()
 {
     contacts_.clear();
@@ -119,8 +205,6 @@ void Foam::rbd::world::findContacts()
     }
     neighbours_.update(x, 2*rb_ + band_);
 
-    const scalar a = rb_;
-    contact c;
     for (const labelPair& pr : neighbours_.pairs())
     {
         label i = pr.first();
@@ -133,28 +217,14 @@ void Foam::rbd::world::findContacts()
         {
             std::swap(i, k);
         }
-        if
-        (
-            sphereContacts::sphereSphere
-            (
-                i, bodies_[i], a, k, bodies_[k], a, band_, c
-            )
-        )
-        {
-            c.e = material_.restitution;
-            c.mu = material_.friction;
-            contacts_.append(c);
-        }
+        pelletPair(i, k);
     }
 
     forAll(bodies_, i)
     {
         if (!fixed_[i])
         {
-            sphereContacts::sphereTube
-            (
-                i, bodies_[i], a, tube_, band_, contacts_
-            );
+            pelletContainer(i);
         }
     }
 
@@ -177,7 +247,10 @@ void Foam::rbd::world::projectOverlaps()
         bool moved = false;
         for (contact& c : contacts_)
         {
-            c.gap = sphereContacts::gap(c, bodies_, rb_, tube_);
+            c.gap =
+                c.centreBased
+              ? sphereContacts::gap(c, bodies_, rb_, tube_)
+              : meshContacts::gap(c, bodies_, tube_);
             if (c.gap >= -slop_)
             {
                 continue;
@@ -215,7 +288,7 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
 
     // Spheres: the gaps depend on the centres only, so rotation does not
     // close them; otherwise the surface moves up to |omega| r_b faster
-    const bool centreGaps = shape_.isSphere();
+    const bool centreGaps = !meshes_.valid();
     auto surfaceSpeed = [&](const label i)
     {
         const rigidBody& b = bodies_[i];
@@ -252,6 +325,33 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         )
     );
 
+    // Eq 38 for a pair (k < 0: the container) whose bounding spheres are
+    // within the band: delta_t <= 0.2 lambda/|v_ik,max|, |v_ik,max| the
+    // largest relative surface speed |v_i - v_k| + (|omega_i| + |omega_k|)
+    // r_b (spheres: of the centres). Needed for meshes: a pair may be
+    // within the band of its bounding spheres before any feature is
+    // within the band of the surfaces, and no feature may then cross the
+    // band in one step.
+    auto eq38 = [&](const label i, const label k)
+    {
+        const bool kMoves = k >= 0 && !fixed_[k];
+        const vector vCentres
+        (
+            (fixed_[i] ? Zero : bodies_[i].v())
+          - (kMoves ? bodies_[k].v() : Zero)
+        );
+        scalar speed = mag(vCentres);
+        if (!centreGaps)
+        {
+            speed +=
+                (
+                    (fixed_[i] ? 0 : mag(bodies_[i].omega()))
+                  + (kMoves ? mag(bodies_[k].omega()) : 0)
+                )*rb_;
+        }
+        return speed > VSMALL ? 0.2*band_/speed : GREAT;
+    };
+
     // 2. Listed pairs apart by more than the band: their bounding spheres
     //    may approach until touching
     for (const labelPair& pr : neighbours_.pairs())
@@ -278,6 +378,10 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
             const scalar a = (fixed_[i] || fixed_[k]) ? g : 2*g;
             h = min(h, untilTouching(gap, u, a));
         }
+        else if (!centreGaps)
+        {
+            h = min(h, fixed_[i] ? eq38(k, i) : eq38(i, k));
+        }
     }
 
     // ... and the container, the same way
@@ -295,6 +399,10 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         {
             h = min(h, untilTouching(zGap, -b.v().z() + spin, g));
         }
+        else if (!centreGaps)
+        {
+            h = min(h, eq38(i, tubeBottom));
+        }
         const vector rho(b.x().x(), b.x().y(), 0);
         const scalar rhoMag = mag(rho);
         const scalar wallGap = R - rhoMag - rb_;
@@ -302,6 +410,10 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         {
             const scalar u = (b.v() & rho)/rhoMag + spin;
             h = min(h, untilTouching(wallGap, u, g));
+        }
+        else if (!centreGaps)
+        {
+            h = min(h, eq38(i, tubeWall));
         }
     }
 
@@ -313,20 +425,8 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
             collisionResolver::relativeVelocity(c, bodies_, fixed_)
         );
 
-        // Eq 38: delta_t <= 0.2 lambda/|v_ik|, the relative surface speed
-        // (spheres: of the centres)
-        const vector vSurface
-        (
-            centreGaps
-          ? (fixed_[c.i] ? Zero : bodies_[c.i].v())
-          - ((c.k < 0 || fixed_[c.k]) ? Zero : bodies_[c.k].v())
-          : vRel
-        );
-        const scalar speed = mag(vSurface);
-        if (speed > VSMALL)
-        {
-            h = min(h, 0.2*band_/speed);
-        }
+        // Eq 38 for the pair of every contact
+        h = min(h, eq38(c.i, c.k));
 
         // Approaching contacts stop at the touching gap
         if (c.gap > touch_)

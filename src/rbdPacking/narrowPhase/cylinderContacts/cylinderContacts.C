@@ -1,0 +1,139 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "cylinderContacts.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    //- Unit projection of d normal to the unit axis ax; a fixed normal
+    //  direction when d is along the axis
+    vector normalTo(const vector& d, const vector& ax)
+    {
+        vector w(d - ax*(ax & d));
+        const scalar m = mag(w);
+        if (m > 1e-12*max(mag(d), scalar(1)))
+        {
+            return w/m;
+        }
+        w = (mag(ax.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0));
+        w -= ax*(ax & w);
+        return w/mag(w);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
+
+void Foam::rbd::cylinderContacts::cylinderTube
+(
+    const label i,
+    const rigidBody& bi,
+    const scalar a,
+    const scalar b,
+    const tube& container,
+    const scalar band,
+    DynamicList<contact>& contacts
+)
+{
+    const point& x = bi.x();
+    const scalar rb = Foam::sqrt(sqr(a) + sqr(b));
+    const scalar Rt = container.radius();
+    const bool nearBottom = x.z() - rb < band;
+    const bool nearWall = tube::axialDistance(x) + rb > Rt - band;
+    if (!nearBottom && !nearWall)
+    {
+        return;
+    }
+
+    const vector ax(bi.R() & vector(0, 0, 1));
+
+    auto add = [&](const point& p, const label part, const scalar gap)
+    {
+        contact c;
+        c.i = i;
+        c.k = part;
+        c.gap = gap;
+        c.nDot = Zero;
+        c.e = container.restitution();
+        c.mu = container.friction();
+        c.centreBased = false;
+        c.ri = p - x;
+        if (part == tubeBottom)
+        {
+            c.n = vector(0, 0, 1);
+            c.p = point(p.x(), p.y(), 0.5*p.z());
+            c.rk = point(p.x(), p.y(), 0);
+        }
+        else
+        {
+            const scalar rho = tube::axialDistance(p);
+            const vector er(p.x()/rho, p.y()/rho, 0);
+            c.n = -er;
+            c.p = p + 0.5*gap*er;
+            c.rk = p + gap*er;
+        }
+        contacts.append(c);
+    };
+
+    for (const scalar side : {-1.0, 1.0})
+    {
+        const point c(x + side*b*ax);
+
+        if (nearBottom && c.z() - a < band)
+        {
+            const vector w(normalTo(vector(0, 0, -1), ax));
+            const vector u(ax ^ w);
+            for (const vector& d : {w, u, -w, -u})
+            {
+                const point p(c + a*d);
+                if (p.z() < band)
+                {
+                    add(p, tubeBottom, p.z());
+                }
+            }
+        }
+
+        if (nearWall && tube::axialDistance(c) + a > Rt - band)
+        {
+            vector er
+            (
+                tube::axialDistance(c) > VSMALL
+              ? vector(c.x(), c.y(), 0) : vector(1, 0, 0)
+            );
+            vector w(normalTo(er, ax));
+            for (label iter = 0; iter < 50; ++iter)
+            {
+                const point p(c + a*w);
+                if (tube::axialDistance(p) < VSMALL)
+                {
+                    break;
+                }
+                const vector wNew(normalTo(vector(p.x(), p.y(), 0), ax));
+                const scalar change = magSqr(wNew - w);
+                w = wNew;
+                if (change < 1e-20)
+                {
+                    break;
+                }
+            }
+            const vector u(ax ^ w);
+            for (const vector& d : {w, u, -w, -u})
+            {
+                const point p(c + a*d);
+                const scalar rho = tube::axialDistance(p);
+                if (rho > VSMALL && Rt - rho < band)
+                {
+                    add(p, tubeWall, Rt - rho);
+                }
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,857 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "meshContacts.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::rbd::meshContacts::clusterAngle =
+    20*Foam::constant::mathematical::pi/180;
+
+const Foam::label Foam::rbd::meshContacts::nTiers = 3;
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+    using namespace Foam::rbd;
+
+    //- A vertex takes part when one of its faces faces the other surface:
+    //  its normal and the other's normal n are opposed at least this much
+    const scalar facing = 0.05;
+
+    //- Barycentric tolerance of "the projection falls inside the face"
+    const scalar insideTol = 1e-9;
+
+    //- Relative end tolerance of "the closest points are inside the edges"
+    const scalar edgeTol = 1e-6;
+
+    //- Normal cone tolerance (cosine) of edge/edge contacts
+    const scalar coneTol = 1e-3;
+
+    //- Edges closer to parallel than this (sine) give no edge/edge contact
+    const scalar parallelSin = 1e-3;
+
+    //- Projection of p onto the plane of triangle (a, b, c) falls inside
+    bool projectsInside
+    (
+        const point& p,
+        const point& a,
+        const point& b,
+        const point& c
+    )
+    {
+        const vector v0(b - a), v1(c - a), v2(p - a);
+        const scalar d00 = v0 & v0, d01 = v0 & v1, d11 = v1 & v1;
+        const scalar d20 = v2 & v0, d21 = v2 & v1;
+        const scalar den = d00*d11 - d01*d01;
+        if (den <= VSMALL)
+        {
+            return false;
+        }
+        const scalar v = (d11*d20 - d01*d21)/den;
+        const scalar w = (d00*d21 - d01*d20)/den;
+        return v >= -insideTol && w >= -insideTol && v + w <= 1 + insideTol;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const Foam::point& Foam::rbd::meshContacts::moved
+(
+    const label p,
+    const tensor& R,
+    const vector& t
+) const
+{
+    if (stamp_[p] != stampNow_)
+    {
+        stamp_[p] = stampNow_;
+        moved_[p] = (R & bvh_.mesh().points()[p]) + t;
+    }
+    return moved_[p];
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::meshContacts::meshContacts(const triMesh& mesh, const scalar band)
+:
+    bvh_(mesh),
+    band_(band),
+    depth_(band),
+    radius_(mesh.boundingRadius()),
+    mergeDistance_(1e-3*mesh.boundingRadius()),
+    moved_(mesh.nPoints()),
+    stamp_(mesh.nPoints(), -1),
+    stampNow_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::rbd::meshContacts::meshMesh
+(
+    const label i,
+    const rigidBody& bi,
+    const label k,
+    const rigidBody& bk,
+    DynamicList<contact>& contacts
+) const
+{
+    const label start = contacts.size();
+
+    // Pose of i in the frame of k: p_k = R p_i + t
+    const tensor& Rk = bk.R();
+    const tensor R(Rk.T() & bi.R());
+    const vector t(Rk.T() & (bi.x() - bk.x()));
+    ++stampNow_;
+
+    const pointField& pts = bvh_.mesh().points();
+    const List<triFace>& fs = bvh_.mesh().faces();
+    const vectorField& nf = bvh_.normals();
+    const List<bodyBVH::edgeInfo>& es = bvh_.edges();
+    const labelListList& pf = bvh_.pointFaces();
+    const List<bodyBVH::node>& nodes = bvh_.nodes();
+    const labelList& order = bvh_.order();
+
+    const vector wi(bi.omega());
+    const vector wk(bk.omega());
+
+    // Bounding spheres apart by more than the band: nothing to find
+    if (magSqr(bi.x() - bk.x()) >= sqr(2*radius_ + band_))
+    {
+        return;
+    }
+
+    // A feature pair may be met in several leaf pairs (a point or an edge
+    // shared by two leaves): the duplicate contacts coincide, and reduce()
+    // keeps one of them (it drops points within mergeDistance of a kept
+    // one), which is cheaper than remembering the pairs seen
+
+    // World contact from a point on i (pI) and one on k (pK), frame of k,
+    // with the normal nK (frame of k) and its rate nDot (world)
+    auto add = [&]
+    (
+        const point& pI, const point& pK, const vector& nK,
+        const scalar gap, const vector& nDot
+    )
+    {
+        const point pIw((Rk & pI) + bk.x());
+        const point pKw((Rk & pK) + bk.x());
+        contact c;
+        c.i = i;
+        c.k = k;
+        c.n = (Rk & nK);
+        c.gap = gap;
+        c.p = 0.5*(pIw + pKw);
+        c.nDot = nDot;
+        c.e = 0;
+        c.mu = 0;
+        c.centreBased = false;
+        c.ri = pIw - bi.x();
+        c.rk = pKw - bk.x();
+        contacts.append(c);
+    };
+
+    // Vertex v of i over face f of k
+    auto vertexOfI = [&](const label v, const point& p, const label f)
+    {
+        const triFace& tf = fs[f];
+        const vector& n = nf[f];
+        const scalar s = (p - pts[tf[0]]) & n;
+        if (s >= band_ || s <= -depth_)
+        {
+            return;
+        }
+        if (!projectsInside(p, pts[tf[0]], pts[tf[1]], pts[tf[2]]))
+        {
+            return;
+        }
+        bool faces = false;
+        for (const label g : pf[v])
+        {
+            if (((R & nf[g]) & n) < -facing)
+            {
+                faces = true;
+                break;
+            }
+        }
+        if (!faces)
+        {
+            return;
+        }
+        const vector nW(Rk & n);
+        add(p, p - s*n, n, s, wk ^ nW);
+    };
+
+    // Vertex v of k over face f of i
+    auto vertexOfK = [&](const label v, const point& p, const label f)
+    {
+        const triFace& tf = fs[f];
+        const point& a = moved(tf[0], R, t);
+        const vector n(R & nf[f]);
+        const scalar s = (p - a) & n;
+        if (s >= band_ || s <= -depth_)
+        {
+            return;
+        }
+        if
+        (
+           !projectsInside(p, a, moved(tf[1], R, t), moved(tf[2], R, t))
+        )
+        {
+            return;
+        }
+        bool faces = false;
+        for (const label g : pf[v])
+        {
+            if ((nf[g] & n) < -facing)
+            {
+                faces = true;
+                break;
+            }
+        }
+        if (!faces)
+        {
+            return;
+        }
+        const vector nW(Rk & -n);
+        add(p - s*n, p, -n, s, wi ^ nW);
+    };
+
+    // Edge ei of i against edge ek of k
+    auto edgeEdge = [&](const label ei, const label ek)
+    {
+        const bodyBVH::edgeInfo& eI = es[ei];
+        const bodyBVH::edgeInfo& eK = es[ek];
+        const point& p1 = moved(eI.a, R, t);
+        const vector d1(moved(eI.b, R, t) - p1);
+        const point& p2 = pts[eK.a];
+        const vector d2(pts[eK.b] - p2);
+
+        const vector cr(d1 ^ d2);
+        const scalar crMag = mag(cr);
+        const scalar a = d1 & d1;
+        const scalar e = d2 & d2;
+        if (crMag <= parallelSin*Foam::sqrt(a*e))
+        {
+            return;
+        }
+
+        // Closest points of the two lines (Ericson 2005, section 5.1.9)
+        const vector r(p1 - p2);
+        const scalar b = d1 & d2;
+        const scalar c = d1 & r;
+        const scalar f = d2 & r;
+        const scalar den = a*e - b*b;
+        const scalar s = (b*f - c*e)/den;
+        const scalar u = (a*f - b*c)/den;
+        if (s <= edgeTol || s >= 1 - edgeTol || u <= edgeTol || u >= 1 - edgeTol)
+        {
+            return;
+        }
+
+        // Normal from k to i: out of k's edge, in both normal cones
+        vector n(cr/crMag);
+        scalar sign = 1;
+        if ((n & eK.outward) < 0)
+        {
+            n = -n;
+            sign = -1;
+        }
+        if ((n & eK.u1) > coneTol || (n & eK.u2) > coneTol)
+        {
+            return;
+        }
+        if (((R & eI.u1) & -n) > coneTol || ((R & eI.u2) & -n) > coneTol)
+        {
+            return;
+        }
+
+        const point cI(p1 + s*d1);
+        const point cK(p2 + u*d2);
+        const scalar gap = (cI - cK) & n;
+        if (gap >= band_ || gap <= -depth_)
+        {
+            return;
+        }
+
+        // n' from the rotation of both edges (world frame)
+        const vector d1w(Rk & d1);
+        const vector d2w(Rk & d2);
+        const vector crW(Rk & cr);
+        const vector crDot(((wi ^ d1w) ^ d2w) + (d1w ^ (wk ^ d2w)));
+        const vector hat(crW/crMag);
+        const vector nDot(sign*(crDot - hat*(hat & crDot))/crMag);
+
+        add(cI, cK, n, gap, nDot);
+    };
+
+    // A vertex p of one body (neighbour points q, frame of k) against a
+    // feature edge (a, d, cone u1, u2, outward o) of the other, the closest
+    // point inside the edge: n = +-(p - c)/|p - c| out of the edge, in the
+    // edge's normal cone, the vertex extreme along -n
+    auto vertexEdge =
+    [&](const point& p, const labelList& faces, const bool onI,
+        const point& a, const vector& d, const vector& u1, const vector& u2,
+        const vector& o, point& c, vector& n, scalar& gap)
+    {
+        const scalar dd = d & d;
+        const scalar s = ((p - a) & d)/dd;
+        if (s <= edgeTol || s >= 1 - edgeTol)
+        {
+            return false;
+        }
+        c = a + s*d;
+        const vector r(p - c);
+        const scalar dist = mag(r);
+        if (dist >= band_ || dist <= VSMALL)
+        {
+            return false;
+        }
+        n = r/dist;
+        gap = dist;
+        if ((n & o) < 0)
+        {
+            n = -n;
+            gap = -dist;
+            if (dist >= depth_)
+            {
+                return false;
+            }
+        }
+        if ((n & u1) > coneTol || (n & u2) > coneTol)
+        {
+            return false;
+        }
+        for (const label f : faces)
+        {
+            for (const label w : fs[f])
+            {
+                const point q(onI ? moved(w, R, t) : pts[w]);
+                const vector e(q - p);
+                if ((e & n) < -coneTol*mag(e))
+                {
+                    return false;
+                }
+            }
+        }
+        return true;
+    };
+
+    bvh_.leafPairs
+    (
+        bvh_, R, t, band_,
+        [&](const label li, const label lk)
+        {
+            const bodyBVH::node& ni = nodes[li];
+            const bodyBVH::node& nk = nodes[lk];
+
+            // Points of i's leaf near k's leaf box, over k's faces
+            for (const label v : bvh_.leafPoints(li))
+            {
+                const point& p = moved(v, R, t);
+                if (bvh_.boxDistance(lk, p) >= band_)
+                {
+                    continue;
+                }
+                for (label b = nk.first; b < nk.first + nk.count; ++b)
+                {
+                    vertexOfI(v, p, order[b]);
+                }
+            }
+
+            // Points of k's leaf near i's leaf (its sphere), over i's faces
+            const point ci((R & ni.centre) + t);
+            for (const label v : bvh_.leafPoints(lk))
+            {
+                const point& p = pts[v];
+                if (magSqr(p - ci) >= sqr(ni.radius + band_))
+                {
+                    continue;
+                }
+                for (label a = ni.first; a < ni.first + ni.count; ++a)
+                {
+                    vertexOfK(v, p, order[a]);
+                }
+            }
+
+            for (const label ei : bvh_.leafEdges(li))
+            {
+                for (const label ek : bvh_.leafEdges(lk))
+                {
+                    edgeEdge(ei, ek);
+                }
+            }
+
+            // Vertices against edges (a vertex near an edge projects onto
+            // neither face; parallel edges give no edge/edge contact)
+            point cE;
+            vector nE;
+            scalar gE;
+            for (const label v : bvh_.leafPoints(li))
+            {
+                const point& p = moved(v, R, t);
+                if (bvh_.boxDistance(lk, p) >= band_)
+                {
+                    continue;
+                }
+                for (const label ek : bvh_.leafEdges(lk))
+                {
+                    const bodyBVH::edgeInfo& e = es[ek];
+                    if
+                    (
+                        vertexEdge
+                        (
+                            p, pf[v], true, pts[e.a], pts[e.b] - pts[e.a],
+                            e.u1, e.u2, e.outward, cE, nE, gE
+                        )
+                    )
+                    {
+                        add(p, cE, nE, gE, wk ^ (Rk & nE));
+                    }
+                }
+            }
+            for (const label v : bvh_.leafPoints(lk))
+            {
+                const point& p = pts[v];
+                if (magSqr(p - ci) >= sqr(ni.radius + band_))
+                {
+                    continue;
+                }
+                for (const label ei : bvh_.leafEdges(li))
+                {
+                    const bodyBVH::edgeInfo& e = es[ei];
+                    const point& a = moved(e.a, R, t);
+                    if
+                    (
+                        vertexEdge
+                        (
+                            p, pf[v], false, a, moved(e.b, R, t) - a,
+                            R & e.u1, R & e.u2, R & e.outward, cE, nE, gE
+                        )
+                    )
+                    {
+                        // Normal out of i's edge: from k to i is -nE
+                        add(cE, p, -nE, gE, wi ^ (Rk & -nE));
+                    }
+                }
+            }
+        }
+    );
+
+    reduce(contacts, start, mergeDistance_, 0.1*band_);
+}
+
+
+void Foam::rbd::meshContacts::meshTube
+(
+    const label i,
+    const rigidBody& bi,
+    const tube& container,
+    DynamicList<contact>& contacts
+) const
+{
+    const tensor& Ri = bi.R();
+    const point& x = bi.x();
+    const scalar Rt = container.radius();
+    const List<bodyBVH::node>& nodes = bvh_.nodes();
+    const labelList& order = bvh_.order();
+    const List<triFace>& fs = bvh_.mesh().faces();
+
+    if (nodes.empty())
+    {
+        return;
+    }
+    const scalar rb = nodes[0].radius;
+    const bool nearBottom = x.z() - rb < band_;
+    const bool nearWall = tube::axialDistance(x) + rb > Rt - band_;
+    if (!nearBottom && !nearWall)
+    {
+        return;
+    }
+
+    ++stampNow_;
+    DynamicList<label> bottomPts, wallPts;
+    DynamicList<label> stack(32);
+    stack.append(0);
+    while (stack.size())
+    {
+        const bodyBVH::node& nd = nodes[stack.remove()];
+        const point c((Ri & nd.centre) + x);
+        const bool bottom = nearBottom && c.z() - nd.radius < band_;
+        const bool wall =
+            nearWall && tube::axialDistance(c) + nd.radius > Rt - band_;
+        if (!bottom && !wall)
+        {
+            continue;
+        }
+        if (!nd.leaf())
+        {
+            stack.append(nd.left);
+            stack.append(nd.right);
+            continue;
+        }
+        for (label a = nd.first; a < nd.first + nd.count; ++a)
+        {
+            for (const label v : fs[order[a]])
+            {
+                if (stamp_[v] == stampNow_)
+                {
+                    continue;
+                }
+                const point& p = moved(v, Ri, x);
+                if (p.z() < band_)
+                {
+                    bottomPts.append(v);
+                }
+                if (Rt - tube::axialDistance(p) < band_)
+                {
+                    wallPts.append(v);
+                }
+            }
+        }
+    }
+
+    label start = contacts.size();
+    for (const label v : bottomPts)
+    {
+        const point& p = moved_[v];
+        if (p.z() <= -depth_)
+        {
+            continue;
+        }
+        contact c;
+        c.i = i;
+        c.k = tubeBottom;
+        c.n = vector(0, 0, 1);
+        c.gap = p.z();
+        c.p = point(p.x(), p.y(), 0.5*p.z());
+        c.nDot = Zero;
+        c.e = container.restitution();
+        c.mu = container.friction();
+        c.centreBased = false;
+        c.ri = p - x;
+        c.rk = point(p.x(), p.y(), 0);
+        contacts.append(c);
+    }
+    reduce(contacts, start, mergeDistance_, 0.1*band_);
+
+    start = contacts.size();
+    for (const label v : wallPts)
+    {
+        const point& p = moved_[v];
+        const scalar rho = tube::axialDistance(p);
+        const scalar gap = Rt - rho;
+        if (gap <= -depth_ || rho < VSMALL)
+        {
+            continue;
+        }
+        const vector er(p.x()/rho, p.y()/rho, 0);
+        contact c;
+        c.i = i;
+        c.k = tubeWall;
+        c.n = -er;
+        c.gap = gap;
+        c.p = p + 0.5*gap*er;
+        c.nDot = Zero;
+        c.e = container.restitution();
+        c.mu = container.friction();
+        c.centreBased = false;
+        c.ri = p - x;
+        c.rk = p + gap*er;
+        contacts.append(c);
+    }
+    reduce(contacts, start, mergeDistance_, 0.1*band_);
+}
+
+
+void Foam::rbd::meshContacts::sphereMesh
+(
+    const label i,
+    const rigidBody& bi,
+    const scalar a,
+    const label k,
+    const rigidBody& bk,
+    DynamicList<contact>& contacts
+) const
+{
+    const tensor& Rk = bk.R();
+    const point c(Rk.T() & (bi.x() - bk.x()));
+    const List<bodyBVH::node>& nodes = bvh_.nodes();
+    const labelList& order = bvh_.order();
+    const vectorField& nf = bvh_.normals();
+    const scalar reach = a + band_;
+
+    // Closest points of the faces within reach, outside the mesh
+    struct candidate
+    {
+        scalar dist;
+        point q;
+        vector n;
+    };
+    std::vector<candidate> found;
+
+    DynamicList<label> stack(32);
+    if (nodes.size())
+    {
+        stack.append(0);
+    }
+    while (stack.size())
+    {
+        const label ni = stack.remove();
+        if (bvh_.boxDistance(ni, c) > reach)
+        {
+            continue;
+        }
+        const bodyBVH::node& nd = nodes[ni];
+        if (!nd.leaf())
+        {
+            stack.append(nd.left);
+            stack.append(nd.right);
+            continue;
+        }
+        for (label j = nd.first; j < nd.first + nd.count; ++j)
+        {
+            const label f = order[j];
+            const point q(bvh_.closestOnFace(f, c));
+            const vector d(c - q);
+            const scalar dist = mag(d);
+            if (dist >= reach || dist <= a - depth_)
+            {
+                continue;
+            }
+            if ((d & nf[f]) <= 0)
+            {
+                // Centre behind the face: inside or at the back of it
+                continue;
+            }
+            found.push_back({dist, q, dist > VSMALL ? d/dist : nf[f]});
+        }
+    }
+
+    // The nearest point of every group of directions
+    std::sort
+    (
+        found.begin(), found.end(),
+        [](const candidate& x, const candidate& y) { return x.dist < y.dist; }
+    );
+    const scalar cosGroup = Foam::cos(0.25*constant::mathematical::pi);
+    std::vector<candidate> kept;
+    for (const candidate& cd : found)
+    {
+        bool near = false;
+        for (const candidate& kd : kept)
+        {
+            if ((kd.n & cd.n) > cosGroup)
+            {
+                near = true;
+                break;
+            }
+        }
+        if (!near)
+        {
+            kept.push_back(cd);
+        }
+    }
+
+    for (const candidate& cd : kept)
+    {
+        const vector n(Rk & cd.n);
+        const point qW((Rk & cd.q) + bk.x());
+        contact ct;
+        ct.i = i;
+        ct.k = k;
+        ct.n = n;
+        ct.gap = cd.dist - a;
+        ct.p = qW + 0.5*ct.gap*n;
+        ct.nDot = (bk.omega() ^ n);
+        ct.e = 0;
+        ct.mu = 0;
+        ct.centreBased = false;
+        ct.ri = -a*n;
+        ct.rk = qW - bk.x();
+        contacts.append(ct);
+    }
+}
+
+
+Foam::scalar Foam::rbd::meshContacts::gap
+(
+    const contact& c,
+    const UList<rigidBody>& bodies,
+    const tube& container
+)
+{
+    const point pI(bodies[c.i].x() + c.ri);
+    if (c.k == tubeBottom)
+    {
+        return pI.z();
+    }
+    if (c.k == tubeWall)
+    {
+        return container.radius() - tube::axialDistance(pI);
+    }
+    return c.n & (pI - bodies[c.k].x() - c.rk);
+}
+
+
+void Foam::rbd::meshContacts::reduce
+(
+    DynamicList<contact>& contacts,
+    const label start,
+    const scalar mergeDistance,
+    const scalar tier
+)
+{
+    const label n = contacts.size() - start;
+    if (n <= 1)
+    {
+        return;
+    }
+
+    // Deepest first
+    std::vector<contact> cs(contacts.begin() + start, contacts.end());
+    std::stable_sort
+    (
+        cs.begin(), cs.end(),
+        [](const contact& x, const contact& y) { return x.gap < y.gap; }
+    );
+
+    // Groups of normals
+    const scalar cosGroup = Foam::cos(clusterAngle);
+    std::vector<std::vector<label>> groups;
+    for (label a = 0; a < n; ++a)
+    {
+        bool placed = false;
+        for (auto& g : groups)
+        {
+            if ((cs[g.front()].n & cs[a].n) > cosGroup)
+            {
+                g.push_back(a);
+                placed = true;
+                break;
+            }
+        }
+        if (!placed)
+        {
+            groups.push_back({a});
+        }
+    }
+
+    contacts.setSize(start);
+    std::vector<label> level;
+    for (const auto& g : groups)
+    {
+        const vector& nG = cs[g.front()].n;
+        const scalar g0 = cs[g.front()].gap;
+
+        for (label t = 0; t < (tier > 0 ? nTiers : 1); ++t)
+        {
+            // The points of this tier of gaps (g is sorted by gap)
+            level.clear();
+            for (const label a : g)
+            {
+                const scalar above = cs[a].gap - g0;
+                if (above >= t*tier && (above < (t + 1)*tier || tier <= 0))
+                {
+                    level.push_back(a);
+                }
+            }
+            if (level.empty())
+            {
+                continue;
+            }
+            const point& p0 = cs[level.front()].p;
+
+            // Tangential position relative to the deepest point
+            auto tang = [&](const label a)
+            {
+                const vector d(cs[a].p - p0);
+                return d - nG*(nG & d);
+            };
+
+            // 1. the deepest point
+            contacts.append(cs[level.front()]);
+            if (level.size() == 1)
+            {
+                continue;
+            }
+
+            // 2. the farthest from it
+            label a1 = -1;
+            scalar best = mergeDistance;
+            for (const label a : level)
+            {
+                const scalar d = mag(tang(a));
+                if (d > best)
+                {
+                    best = d;
+                    a1 = a;
+                }
+            }
+            if (a1 < 0)
+            {
+                continue;
+            }
+            contacts.append(cs[a1]);
+            const vector e1(tang(a1));
+
+            // 3. the largest triangle
+            label a2 = -1;
+            best = mergeDistance*mag(e1);
+            vector side(Zero);
+            for (const label a : level)
+            {
+                const vector cr(e1 ^ tang(a));
+                const scalar area = mag(cr);
+                if (area > best)
+                {
+                    best = area;
+                    a2 = a;
+                    side = cr;
+                }
+            }
+            if (a2 < 0)
+            {
+                continue;
+            }
+            contacts.append(cs[a2]);
+
+            // 4. the largest area added outside the triangle (0, 1, 2)
+            const vector corner[3] = {Zero, e1, tang(a2)};
+            const vector up(side/mag(side));
+            label a3 = -1;
+            best = mergeDistance*mag(e1);
+            for (const label a : level)
+            {
+                const vector q(tang(a));
+                for (label j = 0; j < 3; ++j)
+                {
+                    const vector& u = corner[j];
+                    const vector& w = corner[(j + 1) % 3];
+                    // Positive when q lies outside edge (u, w)
+                    const scalar area = -(((w - u) ^ (q - u)) & up);
+                    if (area > best)
+                    {
+                        best = area;
+                        a3 = a;
+                    }
+                }
+            }
+            if (a3 >= 0)
+            {
+                contacts.append(cs[a3]);
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //

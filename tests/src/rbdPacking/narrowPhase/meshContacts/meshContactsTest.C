@@ -1,0 +1,309 @@
+// Mesh contacts of src/rbdPacking/narrowPhase/meshContacts against closed
+// forms: cube on the floor (4 corners), two boxes edge on edge, a vertex on
+// a face, face on face interpenetrating, sphere against a mesh sphere, and
+// the reduction of a flat patch to its corners.
+
+#include <gtest/gtest.h>
+#include "meshContacts.H"
+#include "sphereContacts.H"
+#include "pelletMeshes.H"
+#include "../../shapes/meshing/testMeshes.H"
+
+using namespace Foam;
+using namespace Foam::rbd;
+
+namespace
+{
+    const scalar s = 0.01;          // cube side [m]
+    const scalar band = 0.1*0.5*s*Foam::sqrt(3.0);
+
+    //- Unit-side cube scaled to s, centred on the origin
+    triMesh cube()
+    {
+        triMesh m(rbdTest::box(s, s, s));
+        m.transform(tensor::I, vector::uniform(-0.5*s));
+        return m;
+    }
+
+    rigidBody body(const point& x, const quaternion& q)
+    {
+        return rigidBody(1, vector::one, x, q, true);
+    }
+
+    //- Rotation taking unit vector a to unit vector b
+    quaternion turn(const vector& a, const vector& b)
+    {
+        const vector axis(a ^ b);
+        const scalar angle = Foam::atan2(mag(axis), a & b);
+        return quaternion(axis/mag(axis), angle);
+    }
+}
+
+
+TEST(meshContacts, cubeOnFloorGivesItsFourCorners)
+{
+    const triMesh m(cube());
+    const meshContacts mc(m, band);
+    const tube container(1, 1, 0.3, 0.5);
+
+    const scalar gap = 1e-4;
+    const rigidBody b(body(point(0.2, 0.1, 0.5*s + gap), quaternion(1)));
+    DynamicList<contact> cs;
+    mc.meshTube(0, b, container, cs);
+
+    ASSERT_EQ(cs.size(), 4);
+    const List<rigidBody> bodies({b});
+    for (const contact& c : cs)
+    {
+        EXPECT_EQ(c.k, tubeBottom);
+        EXPECT_NEAR(c.gap, gap, 1e-12);
+        EXPECT_NEAR(mag(c.n - vector(0, 0, 1)), 0, 1e-12);
+        EXPECT_NEAR(mag(c.p.x() - 0.2), 0.5*s, 1e-12);
+        EXPECT_NEAR(mag(c.p.y() - 0.1), 0.5*s, 1e-12);
+        EXPECT_NEAR(meshContacts::gap(c, bodies, container), gap, 1e-15);
+        EXPECT_FALSE(c.centreBased);
+        EXPECT_EQ(c.e, 0.5);
+        EXPECT_EQ(c.mu, 0.3);
+    }
+}
+
+
+TEST(meshContacts, twoBoxesEdgeOnEdge)
+{
+    const triMesh m(cube());
+    const meshContacts mc(m, band);
+
+    // Lower box k: top edge along y at z = h/sqrt(2); upper box i: bottom
+    // edge along x at gap above it
+    const scalar half = 0.5*s*Foam::sqrt(2.0);
+    const scalar gap = 2e-4;
+    const rigidBody bk
+    (
+        body(point(0, 0, 0), quaternion(vector(0, 1, 0), 0.25*M_PI))
+    );
+    const rigidBody bi
+    (
+        body
+        (
+            point(0, 0, 2*half + gap),
+            quaternion(vector(1, 0, 0), 0.25*M_PI)
+        )
+    );
+
+    DynamicList<contact> cs;
+    mc.meshMesh(1, bi, 0, bk, cs);
+
+    ASSERT_EQ(cs.size(), 1);
+    const contact& c = cs[0];
+    EXPECT_EQ(c.i, 1);
+    EXPECT_EQ(c.k, 0);
+    EXPECT_NEAR(c.gap, gap, 1e-12);
+    EXPECT_NEAR(mag(c.n - vector(0, 0, 1)), 0, 1e-9);
+    EXPECT_NEAR(mag(c.p - point(0, 0, half + 0.5*gap)), 0, 1e-12);
+
+    // And seen from the other side: the normal flips
+    DynamicList<contact> rs;
+    mc.meshMesh(0, bk, 1, bi, rs);
+    ASSERT_EQ(rs.size(), 1);
+    EXPECT_NEAR(rs[0].gap, gap, 1e-12);
+    EXPECT_NEAR(mag(rs[0].n + vector(0, 0, 1)), 0, 1e-9);
+}
+
+
+TEST(meshContacts, vertexOnFace)
+{
+    const triMesh m(cube());
+    const meshContacts mc(m, band);
+
+    // Upper cube i stands on a corner: its diagonal (1, 1, 1) points down
+    const quaternion q(turn(vector(1, 1, 1)/Foam::sqrt(3.0), vector(0, 0, -1)));
+    const scalar gap = 3e-4;
+    const scalar corner = 0.5*s*Foam::sqrt(3.0);
+    const rigidBody bk(body(point(0, 0, 0), quaternion(1)));
+    const rigidBody bi(body(point(0, 0, 0.5*s + corner + gap), q));
+
+    DynamicList<contact> cs;
+    mc.meshMesh(1, bi, 0, bk, cs);
+    ASSERT_EQ(cs.size(), 1);
+    EXPECT_NEAR(cs[0].gap, gap, 1e-12);
+    EXPECT_NEAR(mag(cs[0].n - vector(0, 0, 1)), 0, 1e-12);
+    EXPECT_NEAR(mag(cs[0].ri - vector(0, 0, -corner)), 0, 1e-12);
+
+    // Face of i over the vertex of k: the normal points from k to i still
+    DynamicList<contact> rs;
+    mc.meshMesh(0, bk, 1, bi, rs);
+    ASSERT_EQ(rs.size(), 1);
+    EXPECT_NEAR(rs[0].gap, gap, 1e-12);
+    EXPECT_NEAR(mag(rs[0].n + vector(0, 0, 1)), 0, 1e-12);
+}
+
+
+TEST(meshContacts, interpenetratingFacesGiveNegativeGapsAndTheirCorners)
+{
+    // Small cube (side s/2) sunk into the top of a cube of side s
+    triMesh small(cube());
+    small.scale(0.5);
+    triMesh big(cube());
+
+    // One mesh per meshContacts: both bodies are the big cube here, the
+    // small one is checked against the closed form through the floor
+    const meshContacts mc(big, band);
+    const scalar depth = 1e-4;
+    const rigidBody bk(body(point(0, 0, 0), quaternion(1)));
+    const rigidBody bi
+    (
+        body
+        (
+            point(0.2*s, 0.3*s, s - depth),
+            quaternion(vector(0, 0, 1), 0.3)
+        )
+    );
+    DynamicList<contact> cs;
+    mc.meshMesh(1, bi, 0, bk, cs);
+
+    // Upper cube's bottom face over the lower's top face, overlapping in
+    // a polygon: the reduced set keeps at most 4 points, all at -depth,
+    // spanning (up to the merge distance) the overlap polygon
+    ASSERT_GE(cs.size(), 3);
+    ASSERT_LE(cs.size(), 4);
+    for (const contact& c : cs)
+    {
+        EXPECT_NEAR(c.gap, -depth, 1e-12);
+        EXPECT_NEAR(mag(c.n - vector(0, 0, 1)), 0, 1e-12);
+        EXPECT_LE(mag(c.p.x()), 0.5*s + 1e-12);
+        EXPECT_LE(mag(c.p.y()), 0.5*s + 1e-12);
+    }
+
+    // The gap follows a translation of the bodies (overlap correction)
+    List<rigidBody> bodies({bk, bi});
+    bodies[1].displace(vector(0, 0, 3*depth));
+    for (const contact& c : cs)
+    {
+        EXPECT_NEAR(meshContacts::gap(c, bodies, tube(1, 1, 0, 0)), 2*depth,
+            1e-12);
+    }
+}
+
+
+TEST(meshContacts, sphereAgainstMeshSphereAgreesWithExactSphereContact)
+{
+    const scalar a = 0.005;
+    const triMesh m(pelletMeshes::sphere(2*a, 1280));
+    const meshContacts mc(m, 0.1*a);
+
+    // Inscribed mesh: the mesh sphere is smaller by at most the sagitta of
+    // its triangles
+    scalar rMin = GREAT;
+    for (const triFace& f : m.faces())
+    {
+        rMin = min(rMin, mag(f.centre(m.points())));
+    }
+    const scalar sagitta = a - rMin;
+    ASSERT_LT(sagitta, 0.01*a);
+
+    for (const scalar gap : {2e-4, 0.0, -1e-4})
+    {
+        const vector dir(vector(0.3, -0.5, 0.8)/mag(vector(0.3, -0.5, 0.8)));
+        const rigidBody bk(body(point(0, 0, 0), quaternion(vector(1, 1, 0)
+            /Foam::sqrt(2.0), 0.4)));
+        const rigidBody bi(body((2*a + gap)*dir, quaternion(1)));
+
+        contact exact;
+        ASSERT_TRUE(sphereContacts::sphereSphere(1, bi, a, 0, bk, a, 0.1*a,
+            exact));
+
+        DynamicList<contact> cs;
+        mc.sphereMesh(1, bi, a, 0, bk, cs);
+        ASSERT_EQ(cs.size(), 1);
+        EXPECT_GE(cs[0].gap, exact.gap - 1e-12);
+        EXPECT_LE(cs[0].gap, exact.gap + sagitta);
+        EXPECT_GT(cs[0].n & exact.n, Foam::cos(0.1));
+    }
+}
+
+
+TEST(meshContacts, meshSpheresAgreeWithExactSpheres)
+{
+    const scalar a = 0.005;
+    const triMesh m(pelletMeshes::sphere(2*a, 1280));
+    const meshContacts mc(m, 0.1*a);
+    scalar rMin = GREAT;
+    for (const triFace& f : m.faces())
+    {
+        rMin = min(rMin, mag(f.centre(m.points())));
+    }
+    const scalar sagitta = a - rMin;
+
+    const vector dir(vector(-0.2, 0.1, 1)/mag(vector(-0.2, 0.1, 1)));
+    const scalar gap = 1e-4;
+    const rigidBody bk(body(point(0, 0, 0), quaternion(vector(0, 0, 1), 1)));
+    const rigidBody bi
+    (
+        body((2*a + gap)*dir, quaternion(vector(1, 0, 0), 0.7))
+    );
+    DynamicList<contact> cs;
+    mc.meshMesh(1, bi, 0, bk, cs);
+    ASSERT_GE(cs.size(), 1);
+    // Every feature pair within the band lies within about sqrt(band/a)
+    // of the line of centres; the deepest one on it
+    scalar minGap = GREAT;
+    vector nDeepest(Zero);
+    for (const contact& c : cs)
+    {
+        if (c.gap < minGap)
+        {
+            minGap = c.gap;
+            nDeepest = c.n;
+        }
+        EXPECT_GT(c.n & dir, Foam::cos(0.35));
+    }
+    EXPECT_GT(nDeepest & dir, Foam::cos(0.1));
+    EXPECT_GE(minGap, gap - 1e-12);
+    EXPECT_LE(minGap, gap + 2*sagitta);
+}
+
+
+TEST(meshContacts, reductionKeepsTheDeepestAndTheCornersOfAPatch)
+{
+    // A 5 x 5 grid of contacts on a plane, the corner (0, 0) deepest, and
+    // one contact with another normal
+    DynamicList<contact> cs;
+    contact other;
+    other.n = vector(1, 0, 0);
+    other.p = point(0, 0, 1);
+    other.gap = 0;
+    cs.append(other);
+    for (label i = 0; i < 5; ++i)
+    {
+        for (label j = 0; j < 5; ++j)
+        {
+            contact c;
+            c.n = vector(0, 0, 1);
+            c.p = point(i, j, 0);
+            c.gap = (i == 0 && j == 0) ? -1 : 0.01*(i + j);
+            cs.append(c);
+        }
+    }
+    meshContacts::reduce(cs, 0, 1e-6, 0);
+
+    // The other normal is its own group
+    ASSERT_EQ(cs.size(), 4 + 1);
+    label corners = 0;
+    label others = 0;
+    scalar minGap = GREAT;
+    for (const contact& c : cs)
+    {
+        if (c.n == vector(1, 0, 0))
+        {
+            ++others;
+            continue;
+        }
+        const point& p = c.p;
+        corners +=
+            (p.x() == 0 || p.x() == 4) && (p.y() == 0 || p.y() == 4);
+        minGap = min(minGap, c.gap);
+    }
+    EXPECT_EQ(others, 1);
+    EXPECT_EQ(corners, 4);
+    EXPECT_EQ(minGap, -1);
+}
