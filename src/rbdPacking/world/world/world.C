@@ -516,8 +516,17 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
 
     // 4. Collisions
     boolList woken(bodies_.size(), false);
+    const scalar energyBefore = contacts_.size() ? kineticEnergy() : 0;
     const collisionResolver::result cr =
         collisions_.resolve(bodies_, contacts_, touch_, fixed_, woken);
+    if (cr.impulses && energyBefore > 0)
+    {
+        stats_.maxCollisionEnergyGain = max
+        (
+            stats_.maxCollisionEnergyGain,
+            (kineticEnergy() - energyBefore)/energyBefore
+        );
+    }
     stats_.collisions += cr.collisions;
     stats_.impulses += cr.impulses;
     forAll(woken, i)

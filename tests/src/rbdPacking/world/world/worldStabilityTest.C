@@ -1,0 +1,310 @@
+// Stability suite of src/rbdPacking/world (issue 6): hard sphere scenes,
+// each stepped with its invariants checked after every step:
+//   - no NaN or Inf in any state; |q| = 1 to round-off;
+//   - no pellet outside the tube (wall and floor);
+//   - the largest interpenetration, at any step and before correction,
+//     within the tolerance (0.2 % of dp);
+//   - the kinetic energy never rises across a collision stage beyond
+//     round-off (world::statistics::maxCollisionEnergyGain);
+//   - the scene settles within a bounded number of steps, and a settled
+//     scene does not creep.
+// Sizes are small so that the suite runs in CI; the soak benchmark runs the
+// same scenes larger and with many seeds.
+
+#include <gtest/gtest.h>
+#include "../../testTools/worldFixture.H"
+
+#include <random>
+
+using namespace rbdTest;
+
+namespace
+{
+    const scalar d = 0.01;
+    const scalar a = 0.5*d;
+
+    //- Largest interpenetration allowed at any step [m]: 0.2 % of dp. The
+    //  scenes stay below 0.01 % except the 20 m/s throw, which reaches
+    //  0.12 % (the step rule bounds accelerations by g; a contact force
+    //  of the resting solve can exceed that within one step)
+    const scalar overlapTolerance = 2e-3*d;
+
+    //- Sleeping as in the tutorials: point contacts have no rolling or
+    //  spin resistance, so without sleep a sphere can keep rolling at
+    //  constant energy (measured: 24 um/s at mu 0.95); with sleep the bed
+    //  comes to a standstill
+    const std::string sleepOn = "sleepVelocity 0.001;";
+
+    //- Steps a sphere scene, checking the invariants at every step
+    struct monitor
+    {
+        world& w;
+        const tube& container;
+        label badStates = 0;
+        scalar maxQuaternionError = 0;
+        scalar maxEscape = 0;
+
+        void check()
+        {
+            for (const rigidBody& b : w.bodies())
+            {
+                const quaternion& q = b.q();
+                const bool finite =
+                    std::isfinite(mag(b.x())) && std::isfinite(mag(b.v()))
+                 && std::isfinite(mag(b.omega()))
+                 && std::isfinite(q.w()) && std::isfinite(mag(q.v()));
+                if (!finite)
+                {
+                    ++badStates;
+                    continue;
+                }
+                maxQuaternionError = max
+                (
+                    maxQuaternionError, mag(mag(q) - 1)
+                );
+                const scalar r = Foam::sqrt(sqr(b.x().x()) + sqr(b.x().y()));
+                maxEscape = max(maxEscape, r + a - container.radius());
+                maxEscape = max(maxEscape, a - b.x().z());
+            }
+        }
+
+        //- Step until time t; returns the steps taken
+        label runUntil(const scalar t, const scalar hMax)
+        {
+            label steps = 0;
+            while (w.time() < t - SMALL)
+            {
+                w.step(min(hMax, t - w.time()));
+                check();
+                ++steps;
+            }
+            return steps;
+        }
+
+        //- Run until the kinetic energy stays below energy [J] for
+        //  quiet [s] (checked every interval), at most until tMax [s];
+        //  returns the time it settled, or GREAT
+        scalar settle
+        (
+            const scalar energy,
+            const scalar quiet,
+            const scalar tMax,
+            const scalar hMax
+        )
+        {
+            scalar calmSince = -1;
+            while (w.time() < tMax)
+            {
+                runUntil(w.time() + 0.01, hMax);
+                if (w.kineticEnergy() < energy)
+                {
+                    if (calmSince < 0)
+                    {
+                        calmSince = w.time();
+                    }
+                    if (w.time() - calmSince >= quiet)
+                    {
+                        return w.time();
+                    }
+                }
+                else
+                {
+                    calmSince = -1;
+                }
+            }
+            return GREAT;
+        }
+
+        //- Largest displacement of any pellet over further time dt
+        scalar creep(const scalar dt, const scalar hMax)
+        {
+            List<point> x(w.bodies().size());
+            forAll(x, i)
+            {
+                x[i] = w.bodies()[i].x();
+            }
+            const scalar E0 = w.kineticEnergy();
+            scalar Emax = E0;
+            for (label k = 0; k < 20; ++k)
+            {
+                runUntil(w.time() + dt/20, hMax);
+                Emax = max(Emax, w.kineticEnergy());
+            }
+            // At rest nothing feeds energy in: it may only fall
+            EXPECT_LE(Emax, E0*(1 + 1e-6) + 1e-15);
+            scalar m = 0;
+            forAll(x, i)
+            {
+                m = max(m, mag(w.bodies()[i].x() - x[i]));
+            }
+            return m;
+        }
+
+        void expectHealthy(const std::string& what) const
+        {
+            EXPECT_EQ(badStates, 0) << what;
+            EXPECT_LT(maxQuaternionError, 1e-12) << what;
+            EXPECT_LT(maxEscape, overlapTolerance) << what;
+            EXPECT_LT(w.stats().maxOverlap, overlapTolerance) << what;
+            EXPECT_LT(w.stats().maxCollisionEnergyGain, 1e-9) << what;
+        }
+    };
+
+    //- Drop n spheres, seeded, from random points of a column above the
+    //  floor of a tube of diameter D
+    void dropSpheres
+    (
+        world& w,
+        const label n,
+        const scalar D,
+        const unsigned seed,
+        const scalar spacing = 1.3*d,
+        const scalar vz = 0
+    )
+    {
+        std::mt19937 gen(seed);
+        std::uniform_real_distribution<scalar> u(-1, 1);
+        const scalar rMax = max(0.5*D - a - 1e-4, 0.0);
+        for (label i = 0; i < n; ++i)
+        {
+            scalar x, y;
+            do
+            {
+                x = rMax*u(gen);
+                y = rMax*u(gen);
+            } while (sqr(x) + sqr(y) > sqr(rMax));
+            const label id =
+                w.addBody(point(x, y, a + 0.001 + spacing*i), quaternion(1));
+            if (vz != 0)
+            {
+                w.setVelocity(id, vector(0, 0, vz), Zero);
+            }
+        }
+    }
+
+    //- Energy scale of n spheres: n m g dp [J]
+    scalar energyScale(const world& w)
+    {
+        return
+            w.bodies().size()*w.bodies()[0].mass()*9.81*d;
+    }
+}
+
+
+TEST(stability, bouncySlipperySpheresInTheNarrowestTube)
+{
+    // COR 0.95 and mu 0.05 at N = 3.1: long rattling, little dissipation
+    sphereScene s(3.1*d, d, 0.05, 0.95, 0.05, 0.95, sleepOn);
+    dropSpheres(s(), 15, 3.1*d, 1);
+    monitor m{s(), s.container};
+    const scalar tSettled = m.settle(1e-7*energyScale(s()), 1.0, 15, 0.025);
+    m.expectHealthy("COR 0.95, mu 0.05");
+    EXPECT_LT(tSettled, 15);
+    EXPECT_LT(s().stats().steps, 200000);
+    EXPECT_LT(m.creep(1, 0.025), 1e-4*d);
+    m.expectHealthy("COR 0.95, mu 0.05, settled");
+}
+
+
+TEST(stability, highFriction)
+{
+    sphereScene s(4*d, d, 0.95, 0.6, 0.95, 0.6, sleepOn);
+    dropSpheres(s(), 20, 4*d, 2);
+    monitor m{s(), s.container};
+    EXPECT_LT(m.settle(1e-7*energyScale(s()), 1.0, 10, 0.025), 10);
+    m.expectHealthy("mu 0.95");
+    EXPECT_LT(m.creep(1, 0.025), 1e-4*d);
+}
+
+
+TEST(stability, fiftySphereRestingColumnWithPerStepChecks)
+{
+    // The zig-zag column of the narrowest tube (1.6 dp), built at rest
+    const scalar R = 0.8*d;
+    const scalar rho = R - a;
+    const scalar dz = Foam::sqrt(sqr(d) - sqr(2*rho));
+    sphereScene s(2*R, d, 0.3, 0.9, 0.3, 0.6, "sleepVelocity 0;");
+    List<point> start(50);
+    forAll(start, i)
+    {
+        start[i] = point((i % 2 ? 1 : -1)*rho, 0, a + dz*i);
+        s().addBody(start[i], quaternion(1));
+    }
+    monitor m{s(), s.container};
+    m.runUntil(3, 0.025);
+    m.expectHealthy("50-sphere column");
+    scalar drift = 0;
+    forAll(start, i)
+    {
+        drift = max(drift, mag(s().bodies()[i].x() - start[i]));
+    }
+    EXPECT_LT(drift, 1e-6*d);
+    EXPECT_EQ(s().stats().lcpFailures, 0);
+}
+
+
+TEST(stability, spheresStartingInContactWithEachOtherAndTheWall)
+{
+    // A ring of six spheres touching the wall and their neighbours, and a
+    // seventh in the middle touching all six, on the floor: exact contact
+    // (gap 0) everywhere at the start
+    const scalar D = 3*d;
+    sphereScene s(D, d, 0.1, 0.9, 0.6, 0.6, sleepOn);
+    s().addBody(point(0, 0, a), quaternion(1));
+    for (label k = 0; k < 6; ++k)
+    {
+        const scalar phi = k*constant::mathematical::pi/3;
+        s().addBody(point(d*Foam::cos(phi), d*Foam::sin(phi), a), quaternion(1));
+    }
+    // ... and three in the pockets above them, a hair too high
+    for (label k = 0; k < 3; ++k)
+    {
+        const scalar phi = (4*k + 1)*constant::mathematical::pi/6;
+        s().addBody
+        (
+            point(0.577*d*Foam::cos(phi), 0.577*d*Foam::sin(phi), a + 0.9*d),
+            quaternion(1)
+        );
+    }
+    monitor m{s(), s.container};
+    EXPECT_LT(m.settle(1e-7*energyScale(s()), 1.0, 5, 0.025), 5);
+    m.expectHealthy("starting in contact");
+    EXPECT_LT(m.creep(1, 0.025), 1e-4*d);
+}
+
+
+class stepSizes : public ::testing::TestWithParam<scalar> {};
+
+TEST_P(stepSizes, bedSettlesTheSameWayAtTinyAndHugeOuterSteps)
+{
+    // deltaT bounds every step; the step rule must keep a huge one safe
+    sphereScene s
+    (
+        4*d, d, 0.1, 0.9, 0.6, 0.6,
+        "deltaT " + std::to_string(GetParam()) + ";"
+    );
+    dropSpheres(s(), 15, 4*d, 3);
+    monitor m{s(), s.container};
+    EXPECT_LT(m.settle(1e-7*energyScale(s()), 1.0, 10, GetParam()), 10);
+    m.expectHealthy("deltaT " + std::to_string(GetParam()));
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    outer, stepSizes, ::testing::Values(1e-4, 0.5)
+);
+
+
+TEST(stability, fastDropFromHighUp)
+{
+    // 10 spheres thrown down at 20 m/s (a fall from 20 m): the step rule
+    // must catch every impact (no tunnelling through the floor or a pellet)
+    sphereScene s(3*d, d, 0.1, 0.9, 0.6, 0.6);
+    dropSpheres(s(), 10, 3*d, 4, 3*d, -20);
+    monitor m{s(), s.container};
+    EXPECT_LT(m.settle(1e-7*energyScale(s()), 1.0, 10, 0.025), 10);
+    m.expectHealthy("fast drop");
+}
+
+
+// ************************************************************************* //
