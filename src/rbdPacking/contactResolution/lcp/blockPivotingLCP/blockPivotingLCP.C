@@ -39,7 +39,7 @@ Foam::rbd::blockPivotingLCP::blockPivotingLCP(const dictionary& coeffs)
     (
         getLabelOrDefault(coeffs, "fallbackIterations", 10, 1)
     ),
-    fallbackSize_(getLabelOrDefault(coeffs, "fallbackSize", 60, 0)),
+    fallbackSize_(getLabelOrDefault(coeffs, "fallbackSize", 400, 0)),
     smoothingSweeps_(getLabelOrDefault(coeffs, "smoothingSweeps", 10, 1)),
     fallback_(new baraffLCP(dictionary()))
 {
