@@ -312,6 +312,22 @@ Foam::rbd::restingContactSolver::solve
         {
             phi(a) = max(phi(a), scalar(0));
         }
+        if (!lr.converged)
+        {
+            // No solution to the tolerance (an infeasible island: bodies
+            // jammed between contacts that accelerate into each other, or
+            // a solver that ran out of iterations): its forces may be
+            // arbitrarily large and would launch pellets through their
+            // neighbours. Each force is clamped to what its contact needs
+            // on its own, -B_a/A_aa, so the step stays bounded: a loaded
+            // stack may sink for the step, which the overlap correction
+            // and the next solve repair.
+            for (label a = 0; a < n; ++a)
+            {
+                const scalar Aaa = A.coeff(a, a);
+                phi(a) = Aaa > 0 ? min(phi(a), max(-B(a), 0.0)/Aaa) : 0;
+            }
+        }
     };
 
     // Pass 1: normal forces without friction
