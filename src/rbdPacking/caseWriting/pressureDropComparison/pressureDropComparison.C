@@ -166,7 +166,13 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
         );
     }
     tubeDiameter_ = getPositive(summary, "tubeDiameter", "m");
-    pelletDiameter_ = getPositive(summary, "pelletDiameter", "m");
+    // The correlations' dp is the volume-equivalent diameter dpv
+    // (correlations.md); summaries of sphere beds before dpv was written
+    // have pelletDiameter only, which is dpv for spheres
+    pelletDiameter_ =
+        summary.found("volumeEquivalentDiameter")
+      ? getPositive(summary, "volumeEquivalentDiameter", "m")
+      : getPositive(summary, "pelletDiameter", "m");
     bedHeight_ = getPositive(summary, "bedHeight", "m");
 
     const dictionary transport
@@ -232,7 +238,7 @@ Foam::dictionary Foam::rbd::pressureDropComparison::results() const
     d.add("shape", shape_);
     d.add("bedPorosity", porosity_);
     d.add("tubeDiameter", tubeDiameter_);
-    d.add("pelletDiameter", pelletDiameter_);
+    d.add("volumeEquivalentDiameter", pelletDiameter_);
     d.add("bedHeight", bedHeight_);
     d.add("planeDistance", length_);
     d.add("nu", nu_);

@@ -132,6 +132,49 @@ TEST(pressureDropComparison, readsTheCaseAndComparesWithCorrelations)
 }
 
 
+TEST(pressureDropComparison, correlationsUseTheVolumeEquivalentDiameter)
+{
+    // A cylinder bed: d = h = 10 mm, dpv = 1.5^(1/3) d; the correlations'
+    // dp is dpv, not the nominal diameter
+    const caseWritingTest::tempDir tmp;
+    writeCase(tmp.path());
+    const scalar dpv = cbrt(1.5)*dp;
+    rbd::writeFoamFile
+    (
+        tmp.path()/"postProcessing/rbdPackBed/summary", "dictionary",
+        "shape cylinder; bedPorosity 0.45; tubeDiameter 0.04;"
+        " pelletDiameter 0.01; volumeEquivalentDiameter "
+      + Foam::name(dpv) + "; bedHeight 0.05;"
+    );
+    const rbd::pressureDropComparison c(tmp.path());
+    const scalar U = c.superficialVelocity();
+    EXPECT_EQ(c.shape(), "cylinders");
+    EXPECT_NEAR(c.reynoldsNumber(), U*dpv/nu, 1e-12);
+    EXPECT_NEAR
+    (
+        c.ergun(), rbd::correlations::ergun(nu, 1, U, eps, dpv),
+        1e-9*c.ergun()
+    );
+    EXPECT_NEAR
+    (
+        c.eisfeldSchnitzlein(),
+        rbd::correlations::eisfeldSchnitzlein
+        (
+            nu, 1, U, eps, dpv, D,
+            rbd::correlations::eisfeldSchnitzleinShape::cylinder
+        ),
+        1e-9*c.eisfeldSchnitzlein()
+    );
+    // Creeping flow: the viscous term dominates, ~ 1/dp^2
+    EXPECT_LT
+    (
+        c.ergun(), 0.8*rbd::correlations::ergun(nu, 1, U, eps, dp)
+    );
+    const dictionary d(rbd::readFoamFile(c.writeFile()));
+    EXPECT_NEAR(d.get<scalar>("volumeEquivalentDiameter"), dpv, 1e-12);
+}
+
+
 TEST(pressureDropComparison, lastValueOfNewestRun)
 {
     const caseWritingTest::tempDir tmp;
