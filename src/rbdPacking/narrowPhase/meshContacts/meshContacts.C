@@ -136,12 +136,20 @@ void Foam::rbd::meshContacts::meshMesh
 
     // World contact from a point on i (pI) and one on k (pK), frame of k,
     // with the normal nK (frame of k) and its rate nDot (world)
+    // key: the vertex of a vertex contact (points of k offset by nPoints),
+    // -1 for edge/edge
+    const label nPts = pts.size();
+    std::vector<label>& keys = keys_;
+    std::vector<labelPair>& ends = ends_;
+    keys.clear();
+    ends.clear();
     auto add = [&]
     (
         const point& pI, const point& pK, const vector& nK,
-        const scalar gap, const vector& nDot
+        const scalar gap, const vector& nDot, const label key
     )
     {
+        keys.push_back(key);
         const point pIw((Rk & pI) + bk.x());
         const point pKw((Rk & pK) + bk.x());
         contact c;
@@ -187,7 +195,7 @@ void Foam::rbd::meshContacts::meshMesh
             return;
         }
         const vector nW(Rk & n);
-        add(p, p - s*n, n, s, wk ^ nW);
+        add(p, p - s*n, n, s, wk ^ nW, v);
     };
 
     // Vertex v of k over face f of i
@@ -222,7 +230,7 @@ void Foam::rbd::meshContacts::meshMesh
             return;
         }
         const vector nW(Rk & -n);
-        add(p - s*n, p, -n, s, wi ^ nW);
+        add(p - s*n, p, -n, s, wi ^ nW, nPts + v);
     };
 
     // Edge ei of i against edge ek of k
@@ -282,6 +290,22 @@ void Foam::rbd::meshContacts::meshMesh
             return;
         }
 
+        // The ends of the edges within -gap of the closest points: if one
+        // of them is inside the other body less deep, the edges do not
+        // cross inside it (see the filter after the search)
+        label endI = -1, endK = -1;
+        if (gap < 0)
+        {
+            if (min(s, 1 - s)*Foam::sqrt(a) < -gap)
+            {
+                endI = s < 0.5 ? eI.a : eI.b;
+            }
+            if (min(u, 1 - u)*Foam::sqrt(e) < -gap)
+            {
+                endK = nPts + (u < 0.5 ? eK.a : eK.b);
+            }
+        }
+
         // n' from the rotation of both edges (world frame)
         const vector d1w(Rk & d1);
         const vector d2w(Rk & d2);
@@ -290,7 +314,8 @@ void Foam::rbd::meshContacts::meshMesh
         const vector hat(crW/crMag);
         const vector nDot(sign*(crDot - hat*(hat & crDot))/crMag);
 
-        add(cI, cK, n, gap, nDot);
+        add(cI, cK, n, gap, nDot, -1);
+        ends.push_back(labelPair(endI, endK));
     };
 
     // A vertex p of one body (neighbour points q, frame of k) against a
@@ -414,7 +439,7 @@ void Foam::rbd::meshContacts::meshMesh
                         )
                     )
                     {
-                        add(p, cE, nE, gE, wk ^ (Rk & nE));
+                        add(p, cE, nE, gE, wk ^ (Rk & nE), v);
                     }
                 }
             }
@@ -439,12 +464,76 @@ void Foam::rbd::meshContacts::meshMesh
                     )
                     {
                         // Normal out of i's edge: from k to i is -nE
-                        add(cE, p, -nE, gE, wi ^ (Rk & -nE));
+                        add(cE, p, -nE, gE, wi ^ (Rk & -nE), nPts + v);
                     }
                 }
             }
         }
     );
+
+    // Spurious depths. A vertex is as far from the other body as its
+    // nearest contact; a contact that puts it deeper inside than that
+    // measures the depth to a face or an edge it is not closest to (a
+    // vertex of a rim on another pellet's bottom face is far inside the
+    // plane of that pellet's wall, onto which it projects at its lower
+    // edge): drop it. Likewise edges that cross at depth d with an end
+    // within d of the crossing that is inside the other body less deep
+    // (the vertical edge of a cylinder wall whose lower end has just
+    // dipped below another's top face crosses its rim edges a horizontal
+    // distance inside): the end vertex is the contact.
+    if (nearest_.size() != size_t(2*nPts))
+    {
+        nearest_.assign(2*nPts, GREAT);
+    }
+    for (label a = start; a < contacts.size(); ++a)
+    {
+        const label key = keys[a - start];
+        if (key >= 0 && mag(contacts[a].gap) < mag(nearest_[key]))
+        {
+            nearest_[key] = contacts[a].gap;
+        }
+    }
+    auto shallowerInside = [&](const label end, const scalar gap)
+    {
+        return end >= 0 && nearest_[end] <= 0 && nearest_[end] > gap;
+    };
+    label j = start;
+    label edgeContact = 0;
+    for (label a = start; a < contacts.size(); ++a)
+    {
+        const label key = keys[a - start];
+        const scalar gap = contacts[a].gap;
+        if (key >= 0 && -gap > mag(nearest_[key]))
+        {
+            continue;
+        }
+        if (key < 0)
+        {
+            const labelPair& e = ends[edgeContact++];
+            if
+            (
+                shallowerInside(e.first(), gap)
+             || shallowerInside(e.second(), gap)
+            )
+            {
+                continue;
+            }
+        }
+        if (j != a)
+        {
+            contacts[j] = contacts[a];
+        }
+        ++j;
+    }
+    for (label a = start; a < contacts.size(); ++a)
+    {
+        const label key = keys[a - start];
+        if (key >= 0)
+        {
+            nearest_[key] = GREAT;
+        }
+    }
+    contacts.setSize(j);
 
     reduce(contacts, start, mergeDistance_, 0.1*band_);
 }
