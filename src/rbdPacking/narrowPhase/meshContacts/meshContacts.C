@@ -140,9 +140,7 @@ void Foam::rbd::meshContacts::meshMesh
     // -1 for edge/edge
     const label nPts = pts.size();
     std::vector<label>& keys = keys_;
-    std::vector<labelPair>& ends = ends_;
     keys.clear();
-    ends.clear();
     auto add = [&]
     (
         const point& pI, const point& pK, const vector& nK,
@@ -290,22 +288,6 @@ void Foam::rbd::meshContacts::meshMesh
             return;
         }
 
-        // The ends of the edges within -gap of the closest points: if one
-        // of them is inside the other body less deep, the edges do not
-        // cross inside it (see the filter after the search)
-        label endI = -1, endK = -1;
-        if (gap < 0)
-        {
-            if (min(s, 1 - s)*Foam::sqrt(a) < -gap)
-            {
-                endI = s < 0.5 ? eI.a : eI.b;
-            }
-            if (min(u, 1 - u)*Foam::sqrt(e) < -gap)
-            {
-                endK = nPts + (u < 0.5 ? eK.a : eK.b);
-            }
-        }
-
         // n' from the rotation of both edges (world frame)
         const vector d1w(Rk & d1);
         const vector d2w(Rk & d2);
@@ -315,7 +297,6 @@ void Foam::rbd::meshContacts::meshMesh
         const vector nDot(sign*(crDot - hat*(hat & crDot))/crMag);
 
         add(cI, cK, n, gap, nDot, -1);
-        ends.push_back(labelPair(endI, endK));
     };
 
     // A vertex p of one body (neighbour points q, frame of k) against a
@@ -476,11 +457,9 @@ void Foam::rbd::meshContacts::meshMesh
     // measures the depth to a face or an edge it is not closest to (a
     // vertex of a rim on another pellet's bottom face is far inside the
     // plane of that pellet's wall, onto which it projects at its lower
-    // edge): drop it. Likewise edges that cross at depth d with an end
-    // within d of the crossing that is inside the other body less deep
-    // (the vertical edge of a cylinder wall whose lower end has just
-    // dipped below another's top face crosses its rim edges a horizontal
-    // distance inside): the end vertex is the contact.
+    // edge): drop it. Such contacts made impacts look up to the band deep
+    // (maxOverlap), and the overlap correction and the impulses then
+    // pushed the pellets sideways along the wrong normal.
     if (nearest_.size() != size_t(2*nPts))
     {
         nearest_.assign(2*nPts, GREAT);
@@ -493,12 +472,7 @@ void Foam::rbd::meshContacts::meshMesh
             nearest_[key] = contacts[a].gap;
         }
     }
-    auto shallowerInside = [&](const label end, const scalar gap)
-    {
-        return end >= 0 && nearest_[end] <= 0 && nearest_[end] > gap;
-    };
     label j = start;
-    label edgeContact = 0;
     for (label a = start; a < contacts.size(); ++a)
     {
         const label key = keys[a - start];
@@ -506,18 +480,6 @@ void Foam::rbd::meshContacts::meshMesh
         if (key >= 0 && -gap > mag(nearest_[key]))
         {
             continue;
-        }
-        if (key < 0)
-        {
-            const labelPair& e = ends[edgeContact++];
-            if
-            (
-                shallowerInside(e.first(), gap)
-             || shallowerInside(e.second(), gap)
-            )
-            {
-                continue;
-            }
         }
         if (j != a)
         {
