@@ -136,12 +136,18 @@ void Foam::rbd::meshContacts::meshMesh
 
     // World contact from a point on i (pI) and one on k (pK), frame of k,
     // with the normal nK (frame of k) and its rate nDot (world)
+    // key: the vertex of a vertex contact (points of k offset by nPoints),
+    // -1 for edge/edge
+    const label nPts = pts.size();
+    std::vector<label>& keys = keys_;
+    keys.clear();
     auto add = [&]
     (
         const point& pI, const point& pK, const vector& nK,
-        const scalar gap, const vector& nDot
+        const scalar gap, const vector& nDot, const label key
     )
     {
+        keys.push_back(key);
         const point pIw((Rk & pI) + bk.x());
         const point pKw((Rk & pK) + bk.x());
         contact c;
@@ -187,7 +193,7 @@ void Foam::rbd::meshContacts::meshMesh
             return;
         }
         const vector nW(Rk & n);
-        add(p, p - s*n, n, s, wk ^ nW);
+        add(p, p - s*n, n, s, wk ^ nW, v);
     };
 
     // Vertex v of k over face f of i
@@ -222,7 +228,7 @@ void Foam::rbd::meshContacts::meshMesh
             return;
         }
         const vector nW(Rk & -n);
-        add(p - s*n, p, -n, s, wi ^ nW);
+        add(p - s*n, p, -n, s, wi ^ nW, nPts + v);
     };
 
     // Edge ei of i against edge ek of k
@@ -290,7 +296,7 @@ void Foam::rbd::meshContacts::meshMesh
         const vector hat(crW/crMag);
         const vector nDot(sign*(crDot - hat*(hat & crDot))/crMag);
 
-        add(cI, cK, n, gap, nDot);
+        add(cI, cK, n, gap, nDot, -1);
     };
 
     // A vertex p of one body (neighbour points q, frame of k) against a
@@ -414,7 +420,7 @@ void Foam::rbd::meshContacts::meshMesh
                         )
                     )
                     {
-                        add(p, cE, nE, gE, wk ^ (Rk & nE));
+                        add(p, cE, nE, gE, wk ^ (Rk & nE), v);
                     }
                 }
             }
@@ -439,12 +445,57 @@ void Foam::rbd::meshContacts::meshMesh
                     )
                     {
                         // Normal out of i's edge: from k to i is -nE
-                        add(cE, p, -nE, gE, wi ^ (Rk & -nE));
+                        add(cE, p, -nE, gE, wi ^ (Rk & -nE), nPts + v);
                     }
                 }
             }
         }
     );
+
+    // Spurious depths. A vertex is as far from the other body as its
+    // nearest contact; a contact that puts it deeper inside than that
+    // measures the depth to a face or an edge it is not closest to (a
+    // vertex of a rim on another pellet's bottom face is far inside the
+    // plane of that pellet's wall, onto which it projects at its lower
+    // edge): drop it. Such contacts made impacts look up to the band deep
+    // (maxOverlap), and the overlap correction and the impulses then
+    // pushed the pellets sideways along the wrong normal.
+    if (nearest_.size() != size_t(2*nPts))
+    {
+        nearest_.assign(2*nPts, GREAT);
+    }
+    for (label a = start; a < contacts.size(); ++a)
+    {
+        const label key = keys[a - start];
+        if (key >= 0 && mag(contacts[a].gap) < mag(nearest_[key]))
+        {
+            nearest_[key] = contacts[a].gap;
+        }
+    }
+    label j = start;
+    for (label a = start; a < contacts.size(); ++a)
+    {
+        const label key = keys[a - start];
+        const scalar gap = contacts[a].gap;
+        if (key >= 0 && -gap > mag(nearest_[key]))
+        {
+            continue;
+        }
+        if (j != a)
+        {
+            contacts[j] = contacts[a];
+        }
+        ++j;
+    }
+    for (label a = start; a < contacts.size(); ++a)
+    {
+        const label key = keys[a - start];
+        if (key >= 0)
+        {
+            nearest_[key] = GREAT;
+        }
+    }
+    contacts.setSize(j);
 
     reduce(contacts, start, mergeDistance_, 0.1*band_);
 }

@@ -191,10 +191,46 @@ TEST(worldMesh, ringIntoTheHoleOfAnotherSettlesWithoutJitter)
     EXPECT_LT(fastest, 2e-3);
     EXPECT_LT(mag(s().bodies()[1].x() - x0), 1e-4);
     EXPECT_LT(s().currentMaxOverlap(), 5e-5);
-    // Known gap: an impact may first be seen interpenetrating (up to the
-    // band) and is then corrected; the target is 0.5 % dp
-    EXPECT_LT(s().stats().maxOverlap, s().band());
+    // Largest overlap of the run: 1.04 % dp (known gap: the target is
+    // 0.5 % dp; it was the same before the spurious depths were dropped)
+    EXPECT_LE(s().stats().maxOverlap, 0.015*s.shape->diameter());
     EXPECT_LT(s.outside(), 1e-6);
+}
+
+
+TEST(worldMesh, washersDroppedOnEachOtherOverlapWithinTarget)
+{
+    // Two washers (10/6/2 mm) at random orientations dropped 12 mm apart.
+    // A rim vertex on the other washer's flat face also projects onto its
+    // wall faces, at the wall's edge, and was reported as deep as it is
+    // inside the wall's plane (1.1-4.4 % dp with these seeds) and pushed
+    // sideways; the largest overlap of the run is now within 0.5 % dp
+    for (const unsigned seed : {6u, 7u, 8u})
+    {
+        shapeScene s
+        (
+            0.03, "shape ring; diameter 0.01; innerDiameter 0.006; "
+            "height 0.002; faces 300;"
+        );
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> U(-1, 1);
+        for (label n = 0; n < 2; ++n)
+        {
+            const vector axis(U(rng), U(rng), U(rng));
+            s().addBody
+            (
+                point(0.002*U(rng), 0.002*U(rng), 0.006 + 0.012*n),
+                quaternion(axis/mag(axis), 3*U(rng))
+            );
+        }
+        s().advance(0.4);
+
+        // They met: the upper one rests on or beside the lower one
+        EXPECT_LT(s().bodies()[1].x().z(), 0.012) << "seed " << seed;
+        EXPECT_LE(s().stats().maxOverlap, 0.005*s.shape->diameter())
+            << "seed " << seed;
+        EXPECT_LT(s.outside(), 0.005*s.shape->diameter());
+    }
 }
 
 
@@ -253,7 +289,8 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
 
     EXPECT_LT(s.outside(), 5e-5);
     EXPECT_LT(s().currentMaxOverlap(), 5e-5);
-    // Known gap (see above): transient overlaps up to the band
+    // Known gap: an impact of these 4-face pellets is seen up to the band
+    // deep (0.6 mm); the target is 0.5 % dp
     EXPECT_LT(s().stats().maxOverlap, s().band());
     EXPECT_LT(s.maxSpeed(), 0.05);
     for (const rigidBody& b : s().bodies())
@@ -285,10 +322,10 @@ TEST(worldMesh, smallBedOfCylindersSettlesInsideTheTube)
     s().advance(1);
 
     const scalar dp = 0.005;
-    // Settled overlap within the target; transient impact overlaps (known
-    // gap, see above) within the band
+    // Settled overlap within the target, 0.5 % dp; during the run 1.7 %
+    // dp (known gap)
     EXPECT_LE(s().currentMaxOverlap(), 0.005*dp);
-    EXPECT_LT(s().stats().maxOverlap, s().band());
+    EXPECT_LE(s().stats().maxOverlap, 0.025*dp);
     EXPECT_LT(s.outside(), 0.005*dp);
     for (const rigidBody& b : s().bodies())
     {
