@@ -5,6 +5,7 @@
 #include "simulationControls.H"
 #include "dictionaryChecks.H"
 #include "lcpSolver.H"
+#include "IStringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -14,9 +15,85 @@ const Foam::wordList Foam::rbd::simulationControls::contactModels
 });
 
 
+const Foam::wordList Foam::rbd::simulationControls::presets
+({
+    "fast", "default", "accurate"
+});
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::dictionary Foam::rbd::simulationControls::presetEntries
+(
+    const word& name
+)
+{
+    // Chosen from the one-knob-at-a-time runs of benchmarks/accuracyVsTime
+    // (docs/accuracyVsTime.md): default is the built-in defaults below
+    const char* text = "";
+    if (name == "fast")
+    {
+        text =
+            "deltaT 0.05; restingVelocity 0.02; proximity 0.2;"
+            "contactTolerance 1e-3; lcpSolver blockPivoting;"
+            "blockPivotingCoeffs { tolerance 1e-7; }";
+    }
+    else if (name == "accurate")
+    {
+        text =
+            "deltaT 0.01; restingVelocity 0.005; proximity 0.05;"
+            "contactTolerance 1e-5; lcpSolver blockPivoting;"
+            "blockPivotingCoeffs { tolerance 1e-11; }";
+    }
+    IStringStream is(text);
+    return dictionary(is);
+}
+
+
+Foam::dictionary Foam::rbd::simulationControls::withPreset
+(
+    const dictionary& d
+)
+{
+    const word name = getChoiceOrDefault(d, "preset", "default", presets);
+    dictionary eff(d);
+    for (const entry& e : presetEntries(name))
+    {
+        const word& key = e.keyword();
+        dictionary* given = eff.findDict(key, keyType::LITERAL);
+        if (e.isDict() && given)
+        {
+            // Coefficients: the given ones override, one by one
+            for (const entry& c : e.dict())
+            {
+                if (!given->found(c.keyword(), keyType::LITERAL))
+                {
+                    given->add(c);
+                }
+            }
+        }
+        else if (!eff.found(key, keyType::LITERAL))
+        {
+            eff.add(e);
+        }
+    }
+    return eff;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::rbd::simulationControls::simulationControls(const dictionary& d)
+Foam::rbd::simulationControls::simulationControls(const dictionary& given)
+:
+    simulationControls(withPreset(given), given)
+{}
+
+
+Foam::rbd::simulationControls::simulationControls
+(
+    const dictionary& d,
+    const dictionary& given
+)
 :
     deltaT(getPositiveOrDefault(d, "deltaT", 0.025, "s")),
     endTime(getPositiveOrDefault(d, "endTime", 30, "s")),
@@ -39,6 +116,7 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
     (
         getChoiceOrDefault(d, "contactModel", "auto", contactModels)
     ),
+    preset(d.getOrDefault<word>("preset", "default")),
     dict(d)
 {
     wordList known
@@ -47,11 +125,11 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
         "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
         "restitutionSweeps", "maxSweeps", "sleepVelocity", "sleepTime",
         "settleTime", "settleEnergy", "logInterval", "lcpSolver",
-        "contactModel"
+        "contactModel", "preset"
     };
     // <name>Coeffs of every LCP solver there is
     known.append(lcpSolver::coeffsNames());
-    checkKnownEntries(d, known);
+    checkKnownEntries(given, known);
 
     if (proximity > 1)
     {
@@ -72,6 +150,7 @@ Foam::rbd::simulationControls::simulationControls(const dictionary& d)
 
 void Foam::rbd::simulationControls::write(Ostream& os) const
 {
+    os.writeEntry("preset", preset);
     os.writeEntry("deltaT", deltaT);
     os.writeEntry("endTime", endTime);
     os.writeEntry("gravity", gravity);

@@ -1,10 +1,11 @@
 // Unit tests for src/rbdPacking/world/simulationControls: defaults, the
-// known entries (including every LCP solver's Coeffs), range errors
+// known entries (including every LCP solver's Coeffs), range errors, presets
 
 #include <gtest/gtest.h>
 #include "simulationControls.H"
 #include "lcpSolver.H"
 #include "IStringStream.H"
+#include "OStringStream.H"
 
 using namespace Foam;
 
@@ -60,6 +61,120 @@ TEST(simulationControlsDeath, skinOutOfRange)
         rbd::simulationControls(parse("neighbourSkin 10;")),
         ::testing::ExitedWithCode(1),
         "neighbourSkin(.|\n)*10"
+    );
+}
+
+
+TEST(simulationControls, presetDefaultIsTheBuiltInDefaults)
+{
+    const rbd::simulationControls none(parse(""));
+    const rbd::simulationControls def(parse("preset default;"));
+    EXPECT_EQ(none.preset, "default");
+    EXPECT_EQ(def.preset, "default");
+    EXPECT_EQ(def.deltaT, none.deltaT);
+    EXPECT_EQ(def.restingVelocity, none.restingVelocity);
+    EXPECT_EQ(def.proximity, none.proximity);
+    EXPECT_EQ(def.contactTolerance, none.contactTolerance);
+    EXPECT_EQ
+    (
+        rbd::lcpSolver::New(def.dict)->type(),
+        rbd::lcpSolver::New(none.dict)->type()
+    );
+}
+
+
+TEST(simulationControls, presetsOrderTheAccuracyKnobs)
+{
+    // Every knob of fast is looser than the default, of accurate tighter
+    const rbd::simulationControls f(parse("preset fast;"));
+    const rbd::simulationControls d(parse(""));
+    const rbd::simulationControls a(parse("preset accurate;"));
+    EXPECT_GT(f.deltaT, d.deltaT);
+    EXPECT_LT(a.deltaT, d.deltaT);
+    EXPECT_GT(f.restingVelocity, d.restingVelocity);
+    EXPECT_LT(a.restingVelocity, d.restingVelocity);
+    EXPECT_GT(f.contactTolerance, d.contactTolerance);
+    EXPECT_LT(a.contactTolerance, d.contactTolerance);
+    EXPECT_GE(f.proximity, d.proximity);
+    EXPECT_LE(a.proximity, d.proximity);
+
+    // ... and the values are the listed ones
+    for (const word& name : rbd::simulationControls::presets)
+    {
+        const dictionary p(rbd::simulationControls::presetEntries(name));
+        const rbd::simulationControls c(parse("preset " + name + ";"));
+        EXPECT_EQ(c.preset, name);
+        EXPECT_EQ(c.deltaT, p.getOrDefault<scalar>("deltaT", d.deltaT));
+        EXPECT_EQ
+        (
+            c.proximity, p.getOrDefault<scalar>("proximity", d.proximity)
+        );
+    }
+}
+
+
+TEST(simulationControls, explicitEntriesOverrideThePreset)
+{
+    const rbd::simulationControls f
+    (
+        parse
+        (
+            "preset fast; deltaT 0.001; lcpSolver baraff;"
+            "blockPivotingCoeffs { maxIterations 7; }"
+        )
+    );
+    const dictionary p(rbd::simulationControls::presetEntries("fast"));
+    EXPECT_EQ(f.deltaT, 0.001);
+    EXPECT_EQ(f.restingVelocity, p.get<scalar>("restingVelocity"));
+    EXPECT_EQ(rbd::lcpSolver::New(f.dict)->type(), "baraff");
+
+    // A Coeffs block overrides coefficient by coefficient
+    const rbd::simulationControls a
+    (
+        parse("preset accurate; blockPivotingCoeffs { maxIterations 7; }")
+    );
+    const dictionary& coeffs = a.dict.subDict("blockPivotingCoeffs");
+    EXPECT_EQ(coeffs.get<label>("maxIterations"), 7);
+    EXPECT_EQ
+    (
+        coeffs.get<scalar>("tolerance"),
+        rbd::simulationControls::presetEntries("accurate")
+            .subDict("blockPivotingCoeffs").get<scalar>("tolerance")
+    );
+    const rbd::simulationControls t
+    (
+        parse("preset accurate; blockPivotingCoeffs { tolerance 1e-5; }")
+    );
+    EXPECT_EQ
+    (
+        t.dict.subDict("blockPivotingCoeffs").get<scalar>("tolerance"), 1e-5
+    );
+}
+
+
+TEST(simulationControls, logEchoesThePresetAndTheEffectiveValues)
+{
+    const rbd::simulationControls c(parse("preset fast; deltaT 0.04;"));
+    OStringStream os;
+    c.write(os);
+    const std::string out(os.str());
+    EXPECT_NE(out.find("preset"), std::string::npos);
+    EXPECT_NE(out.find("fast"), std::string::npos);
+    EXPECT_NE(out.find("0.04"), std::string::npos);
+    const dictionary echoed(parse(out));
+    EXPECT_EQ(echoed.get<word>("preset"), "fast");
+    EXPECT_EQ(echoed.get<scalar>("deltaT"), 0.04);
+    EXPECT_EQ(echoed.get<scalar>("contactTolerance"), c.contactTolerance);
+}
+
+
+TEST(simulationControlsDeath, unknownPresetListsTheAllowedOnes)
+{
+    EXPECT_EXIT
+    (
+        rbd::simulationControls(parse("preset quick;")),
+        ::testing::ExitedWithCode(1),
+        "preset(.|\n)*quick(.|\n)*fast(.|\n)*default(.|\n)*accurate"
     );
 }
 
