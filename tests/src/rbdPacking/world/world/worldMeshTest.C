@@ -289,9 +289,10 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
 
     EXPECT_LT(s.outside(), 5e-5);
     EXPECT_LT(s().currentMaxOverlap(), 5e-5);
-    // Known gap: an impact of these 4-face pellets is seen up to the band
-    // deep (0.6 mm); the target is 0.5 % dp
-    EXPECT_LT(s().stats().maxOverlap, s().band());
+    // Largest overlap of the run 0.14 mm (0.23 band; it was 0.6 mm, the
+    // band, before crossing edges had to lie inside the other body's
+    // faces around them). Known gap: the target is 0.5 % dp
+    EXPECT_LT(s().stats().maxOverlap, 0.3*s().band());
     EXPECT_LT(s.maxSpeed(), 0.05);
     for (const rigidBody& b : s().bodies())
     {
