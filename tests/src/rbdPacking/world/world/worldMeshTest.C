@@ -311,7 +311,7 @@ TEST(worldMesh, smallBedOfCylindersSettlesInsideTheTube)
     );
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> U(-1, 1);
-    for (label n = 0; n < 20; ++n)
+    for (label n = 0; n < 10; ++n)
     {
         const vector axis(U(rng), U(rng), U(rng));
         s().addBody
@@ -320,10 +320,11 @@ TEST(worldMesh, smallBedOfCylindersSettlesInsideTheTube)
             quaternion(axis/mag(axis), 3*U(rng))
         );
     }
-    s().advance(1);
+    s().advance(0.8);
 
     const scalar dp = 0.005;
-    // Settled overlap within the target, 0.5 % dp; during the run 1.7 %
+    // Ten cylinders, 0.8 s (20 cylinders, 1 s took 13-40 s). Settled
+    // overlap within the target, 0.5 % dp; during the run up to 2.5 %
     // dp (known gap)
     EXPECT_LE(s().currentMaxOverlap(), 0.005*dp);
     EXPECT_LE(s().stats().maxOverlap, 0.025*dp);
