@@ -307,3 +307,145 @@ TEST(meshContacts, reductionKeepsTheDeepestAndTheCornersOfAPatch)
     EXPECT_EQ(corners, 4);
     EXPECT_EQ(minGap, -1);
 }
+
+
+// * * * * * * * * * * * Brute-force reference of washers * * * * * * * * * //
+
+#include "pelletShape.H"
+#include "IStringStream.H"
+#include <random>
+
+namespace
+{
+    //- Segment (p, q) crosses triangle (a, b, c)
+    bool crosses
+    (
+        const point& p, const point& q,
+        const point& a, const point& b, const point& c
+    )
+    {
+        const vector d(q - p), e1(b - a), e2(c - a);
+        const vector h(d ^ e2);
+        const scalar det = e1 & h;
+        if (mag(det) < 1e-30)
+        {
+            return false;
+        }
+        const vector s(p - a);
+        const scalar u = (s & h)/det;
+        const vector qv(s ^ e1);
+        const scalar v = (d & qv)/det;
+        const scalar t = (e2 & qv)/det;
+        return u >= 0 && v >= 0 && u + v <= 1 && t >= 0 && t <= 1;
+    }
+
+    //- The surfaces of mesh m at poses (Ri, xi) and (Rk, xk) cross
+    bool meshesCross
+    (
+        const triMesh& m,
+        const tensor& Ri, const vector& xi,
+        const tensor& Rk, const vector& xk
+    )
+    {
+        const List<triFace>& fs = m.faces();
+        const pointField& pts = m.points();
+        for (label side = 0; side < 2; ++side)
+        {
+            const tensor& RA = side ? Rk : Ri;
+            const vector& xA = side ? xk : xi;
+            const tensor& RB = side ? Ri : Rk;
+            const vector& xB = side ? xi : xk;
+            pointField a(pts.size()), b(pts.size());
+            forAll(pts, j)
+            {
+                a[j] = (RA & pts[j]) + xA;
+                b[j] = (RB & pts[j]) + xB;
+            }
+            for (const triFace& fa : fs)
+            {
+                for (label j = 0; j < 3; ++j)
+                {
+                    const point& p = a[fa[j]];
+                    const point& q = a[fa[(j + 1) % 3]];
+                    for (const triFace& fb : fs)
+                    {
+                        if (crosses(p, q, b[fb[0]], b[fb[1]], b[fb[2]]))
+                        {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        return false;
+    }
+}
+
+
+TEST(meshContacts, washersTouchingOrCrossingAreNeverMissed)
+{
+    // Two washers (10/6/2 mm, 300 faces) at random orientations brought
+    // together along a random direction: at the first touching position
+    // (bisection on the brute-force crossing test of all edges against all
+    // faces), and moved on by 10 % and 30 % of the band into each other,
+    // meshMesh must report an interpenetration (a contact of gap <= 0)
+    IStringStream is
+    (
+        "shape ring; diameter 0.01; innerDiameter 0.006; height 0.002;"
+        " faces 300;"
+    );
+    const autoPtr<pelletShape> shape(pelletShape::New(dictionary(is)));
+    const triMesh& m = shape->mesh();
+    const scalar lambda = 0.1*m.boundingRadius();
+    const meshContacts mc(m, lambda);
+
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> U(-1, 1);
+    auto randomQ = [&]()
+    {
+        const vector axis(U(rng), U(rng), U(rng));
+        return quaternion(axis/mag(axis), 3*U(rng));
+    };
+
+    label missed = 0;
+    const label nPoses = 15;
+    for (label pose = 0; pose < nPoses; ++pose)
+    {
+        const quaternion qi(randomQ()), qk(randomQ());
+        vector d(U(rng), U(rng), U(rng));
+        d /= mag(d);
+        const tensor Ri(qi.R()), Rk(qk.R());
+
+        // Bisection for the first touch along d
+        scalar lo = 0, hi = 2.2*m.boundingRadius();
+        for (label it = 0; it < 30; ++it)
+        {
+            const scalar mid = 0.5*(lo + hi);
+            (meshesCross(m, Ri, mid*d, Rk, Zero) ? lo : hi) = mid;
+        }
+
+        for (const scalar into : {0.0, 0.1, 0.3})
+        {
+            const scalar sep = hi - into*lambda;
+            const rigidBody bi(body(sep*d, qi));
+            const rigidBody bk(body(Zero, qk));
+            DynamicList<contact> cs;
+            mc.meshMesh(1, bi, 0, bk, cs);
+            scalar gMin = GREAT;
+            for (const contact& c : cs)
+            {
+                gMin = min(gMin, c.gap);
+            }
+            const scalar tol = into > 0 ? 0 : 1e-3*lambda;
+            if (gMin > tol)
+            {
+                ++missed;
+                ADD_FAILURE()
+                    << "pose " << pose << " into " << into
+                    << " contacts " << cs.size() << " gMin/lambda "
+                    << gMin/lambda;
+            }
+        }
+    }
+    EXPECT_EQ(missed, 0);
+}

@@ -289,9 +289,10 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
 
     EXPECT_LT(s.outside(), 5e-5);
     EXPECT_LT(s().currentMaxOverlap(), 5e-5);
-    // Known gap: an impact of these 4-face pellets is seen up to the band
-    // deep (0.6 mm); the target is 0.5 % dp
-    EXPECT_LT(s().stats().maxOverlap, s().band());
+    // Largest overlap of the run 0.14 mm (0.23 band; it was 0.6 mm, the
+    // band, before crossing edges had to lie inside the other body's
+    // faces around them). Known gap: the target is 0.5 % dp
+    EXPECT_LT(s().stats().maxOverlap, 0.3*s().band());
     EXPECT_LT(s.maxSpeed(), 0.05);
     for (const rigidBody& b : s().bodies())
     {
@@ -310,7 +311,7 @@ TEST(worldMesh, smallBedOfCylindersSettlesInsideTheTube)
     );
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> U(-1, 1);
-    for (label n = 0; n < 20; ++n)
+    for (label n = 0; n < 10; ++n)
     {
         const vector axis(U(rng), U(rng), U(rng));
         s().addBody
@@ -319,10 +320,11 @@ TEST(worldMesh, smallBedOfCylindersSettlesInsideTheTube)
             quaternion(axis/mag(axis), 3*U(rng))
         );
     }
-    s().advance(1);
+    s().advance(0.8);
 
     const scalar dp = 0.005;
-    // Settled overlap within the target, 0.5 % dp; during the run 1.7 %
+    // Ten cylinders, 0.8 s (20 cylinders, 1 s took 13-40 s). Settled
+    // overlap within the target, 0.5 % dp; during the run up to 2.5 %
     // dp (known gap)
     EXPECT_LE(s().currentMaxOverlap(), 0.005*dp);
     EXPECT_LE(s().stats().maxOverlap, 0.025*dp);
