@@ -145,7 +145,7 @@ TEST(bedCaseWriter, writesEveryFile)
 
     const dictionary U(rbd::readFoamFile(tmp.path()/"0/U"));
     const dictionary& Ubf = U.subDict("boundaryField");
-    for (const word& patch : {"inlet", "outlet", "wall", "pellets"})
+    for (const char* patch : {"inlet", "outlet", "wall", "pellets"})
     {
         EXPECT_TRUE(Ubf.found(patch)) << patch;
     }
