@@ -494,8 +494,17 @@ void Foam::rbd::packedBed::write() const
 {
     const world& w = world_();
     const pelletShape& shape = shape_();
-    const scalar H =
+    // Default: below the loose top layer; a bed only about one pellet
+    // high has no such part, and is analysed whole
+    scalar H =
         porosityHeight_ > 0 ? porosityHeight_ : bedHeight() - shape.diameter();
+    if (porosityHeight_ <= 0 && H <= 0.5*bedHeight())
+    {
+        H = bedHeight();
+        Info<< "The bed is " << bedHeight() << " m high, not much more than "
+            << "one pellet: porosity analysed up to its top, " << H << " m"
+            << nl << endl;
+    }
 
     bedCaseSettings caseSettings(caseSettings_());
     caseSettings.setBedHeight(bedHeight());

@@ -1,0 +1,27 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# A bed about one pellet high (6 spheres in a wide tube): the default
+# porosity height (bed height - 1 dp) would be empty, so the porosity is
+# analysed up to the top of the bed; the run must end normally with its
+# outputs (it used to stop with a FatalError after the whole simulation).
+#------------------------------------------------------------------------------
+set -u
+here="$(cd "$(dirname "$0")" && pwd)"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
+
+cp -r "$here/cases/smallSpheres" "$tmp/a"
+foamDictionary -entry container/diameter -set 0.08 "$tmp/a/system/packingDict" >/dev/null
+foamDictionary -entry pellets/number -set 6 "$tmp/a/system/packingDict" >/dev/null
+
+rbdPackBed -case "$tmp/a" > "$tmp/a.log" 2>&1
+check "exit status 0" "[ $? -eq 0 ]"
+check "log says the whole bed is analysed" "grep -q 'porosity analysed up to its top' $tmp/a.log"
+out="$tmp/a/postProcessing/rbdPackBed"
+H="$(foamDictionary -entry porosityHeight -value $out/summary 2>/dev/null)"
+top="$(foamDictionary -entry bedHeight -value $out/summary 2>/dev/null)"
+check "porosity height $H is the bed height $top" "[ -n \"$H\" ] && [ \"$H\" = \"$top\" ]"
+check "STL written" "[ -s $tmp/a/constant/triSurface/pellets.stl ]"
+exit $fail
