@@ -453,18 +453,12 @@ void Foam::rbd::packedBed::run()
         }
     }
 
-    // The final contact list, for the contact treatments of the CFD case:
-    // the narrow phase skips pairs of sleeping pellets, so wake every
-    // pellet at rest and take one step of 1 ns (the pellets move by
-    // g (1 ns)^2/2, nothing)
-    forAll(w.bodies(), i)
-    {
-        w.setVelocity(i, Zero, Zero);
-    }
-    w.step(1e-9);
-
     wallTime_ = timer.elapsedTime();
     finalOverlap_ = w.currentMaxOverlap();
+
+    // The final contact list, sleeping pellets included, for the contact
+    // treatments of the CFD case
+    w.allContacts();
 
     Info<< nl;
     if (settled_)
@@ -481,7 +475,8 @@ void Foam::rbd::packedBed::run()
     const world::statistics& s = w.stats();
     Info<< "Simulated " << w.time() << " s in " << s.steps << " steps ("
         << "smallest " << s.minStep << " s), " << s.collisions
-        << " collisions, " << s.restingSolves << " resting-contact solves "
+        << " collisions (" << s.impulses << " impulses in "
+        << s.collisionSweeps << " sweeps), " << s.restingSolves << " resting-contact solves "
         << "(" << s.lcpIterations << " LCP iterations, largest island "
         << s.largestIsland << " contacts, "
         << s.lcpFailures << " not converged), " << s.projections

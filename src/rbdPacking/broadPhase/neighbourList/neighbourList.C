@@ -34,11 +34,42 @@ Foam::rbd::neighbourList::neighbourList(const scalar skin)
     x0_(),
     cutoff0_(-1),
     maxMoved_(0),
-    nBuilds_(0)
+    nBuilds_(0),
+    adjacency_(),
+    adjacencyBuild_(-1)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::labelListList& Foam::rbd::neighbourList::adjacency() const
+{
+    if (adjacencyBuild_ != nBuilds_)
+    {
+        labelList nNbr(x0_.size(), 0);
+        for (const labelPair& pr : pairs_)
+        {
+            ++nNbr[pr.first()];
+            ++nNbr[pr.second()];
+        }
+        adjacency_.setSize(x0_.size());
+        forAll(adjacency_, i)
+        {
+            adjacency_[i].setSize(nNbr[i]);
+            nNbr[i] = 0;
+        }
+        for (const labelPair& pr : pairs_)
+        {
+            const label i = pr.first();
+            const label k = pr.second();
+            adjacency_[i][nNbr[i]++] = k;
+            adjacency_[k][nNbr[k]++] = i;
+        }
+        adjacencyBuild_ = nBuilds_;
+    }
+    return adjacency_;
+}
+
 
 bool Foam::rbd::neighbourList::update
 (

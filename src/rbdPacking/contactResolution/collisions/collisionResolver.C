@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "collisionResolver.H"
+#include "labelPair.H"
 #include "DynamicList.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -104,20 +105,38 @@ Foam::rbd::collisionResolver::resolve
     // which stops it within the step without interpenetration
     const scalar vSlow = 1e-3*epsP_;
 
+    // A contact found satisfied is skipped until an impulse changes one of
+    // its bodies: version counts the impulses on each body, seen holds the
+    // versions of a contact's bodies when it was last found satisfied. The
+    // sweeps then cost what the impulses' spread costs, not the number of
+    // touching contacts times the sweeps, with the same result.
+    labelList version(bodies.size(), 0);
+    List<labelPair> seen(touching.size(), labelPair(-1, -1));
+
     for (label sweep = 0; sweep < maxSweeps_; ++sweep)
     {
         const bool withRestitution = sweep < restitutionSweeps_;
         bool applied = false;
         res.residual = 0;
 
-        for (const label ci : touching)
+        forAll(touching, ti)
         {
-            const contact& c = contacts[ci];
+            const contact& c = contacts[touching[ti]];
+            const labelPair versions
+            (
+                version[c.i], c.k >= 0 ? version[c.k] : 0
+            );
+            if (seen[ti] == versions)
+            {
+                continue;
+            }
+
             const vector vRel(relativeVelocity(c, bodies, fixed));
             const scalar vn = vRel & c.n;
 
             if (vn >= -vSlow)
             {
+                seen[ti] = versions;
                 continue;
             }
 
@@ -153,6 +172,12 @@ Foam::rbd::collisionResolver::resolve
                         slip/effectiveInvMass(c, t, bodies, fixed);
                     applyImpulse(c, min(c.mu*jn, jStick)*t, bodies, fixed);
                 }
+            }
+
+            ++version[c.i];
+            if (c.k >= 0)
+            {
+                ++version[c.k];
             }
 
             applied = true;

@@ -58,6 +58,8 @@ Foam::rbd::world::world
     bodies_(),
     fixed_(),
     slowTime_(),
+    anchorX_(),
+    anchorQ_(),
     neighbours_(controls.neighbourSkin*shape.boundingRadius()),
     collisions_
     (
@@ -121,6 +123,8 @@ Foam::label Foam::rbd::world::addBody(const point& x, const quaternion& q)
     bodies_.append(rigidBody(m, I, x, q, rotates_));
     fixed_.append(false);
     slowTime_.append(0);
+    anchorX_.append(x);
+    anchorQ_.append(q);
     return bodies_.size() - 1;
 }
 
@@ -136,8 +140,7 @@ void Foam::rbd::world::setVelocity
     // L = I omega with I = (I^-1)^-1 in the world frame
     const vector L = rotates_ ? (inv(b.invInertia()) & omega) : vector::zero;
     b.setState(b.x(), b.q(), b.mass()*v, L);
-    fixed_[i] = false;
-    slowTime_[i] = 0;
+    wake(i);
 }
 
 
@@ -194,7 +197,7 @@ void Foam::rbd::world::pelletContainer(const label i)
 }
 
 
-void Foam::rbd::world::findContacts()
+void Foam::rbd::world::findContacts(const bool withSleepers)
 {
     contacts_.clear();
 
@@ -209,11 +212,11 @@ void Foam::rbd::world::findContacts()
     {
         label i = pr.first();
         label k = pr.second();
-        if (fixed_[i] && fixed_[k])
+        if (fixed_[i] && fixed_[k] && !withSleepers)
         {
             continue;
         }
-        if (fixed_[i])
+        if (fixed_[i] && !fixed_[k])
         {
             std::swap(i, k);
         }
@@ -222,7 +225,7 @@ void Foam::rbd::world::findContacts()
 
     forAll(bodies_, i)
     {
-        if (!fixed_[i])
+        if (!fixed_[i] || withSleepers)
         {
             pelletContainer(i);
         }
@@ -457,7 +460,28 @@ void Foam::rbd::world::updateSleep(const scalar h)
     {
         return;
     }
+    const scalar drift = vSleep*controls_.sleepTime;
 
+    // Pellets resting on an awake pellet: the contact normal, from the
+    // other pellet towards this one, points up
+    boolList awakeSupport(bodies_.size(), false);
+    for (const contact& c : contacts_)
+    {
+        if (c.k < 0)
+        {
+            continue;
+        }
+        if (c.n.z() > 0 && !fixed_[c.k])
+        {
+            awakeSupport[c.i] = true;
+        }
+        else if (c.n.z() < 0 && !fixed_[c.i])
+        {
+            awakeSupport[c.k] = true;
+        }
+    }
+
+    const bool turns = rotates_ && !shape_.isSphere();
     forAll(bodies_, i)
     {
         if (fixed_[i])
@@ -465,20 +489,83 @@ void Foam::rbd::world::updateSleep(const scalar h)
             continue;
         }
         rigidBody& b = bodies_[i];
-        if (mag(b.v()) + mag(b.omega())*rb_ < vSleep)
+
+        scalar moved = mag(b.x() - anchorX_[i]);
+        if (turns)
         {
-            slowTime_[i] += h;
-            if (slowTime_[i] >= controls_.sleepTime)
-            {
-                fixed_[i] = true;
-                b.setState(b.x(), b.q(), Zero, Zero);
-            }
+            // Angle of the rotation from the anchor, at the bounding radius
+            const quaternion& qa = anchorQ_[i];
+            const scalar cosHalf = min
+            (
+                mag(b.q().w()*qa.w() + (b.q().v() & qa.v())),
+                scalar(1)
+            );
+            moved += 2*Foam::acos(cosHalf)*rb_;
         }
-        else
+
+        if (moved > drift)
         {
+            anchorX_[i] = b.x();
+            anchorQ_[i] = b.q();
             slowTime_[i] = 0;
+            continue;
+        }
+
+        slowTime_[i] += h;
+        if (slowTime_[i] >= controls_.sleepTime && !awakeSupport[i])
+        {
+            fixed_[i] = true;
+            b.setState(b.x(), b.q(), Zero, Zero);
         }
     }
+}
+
+
+bool Foam::rbd::world::wake(const label i)
+{
+    // A pellet waking restarts its sleep window; the sleepers whose centre
+    // is above its own (spheres: exactly those that can rest on it; other
+    // shapes: above its centre less half the bounding radius) wake with it
+    const bool spheres = shape_.isSphere();
+    const scalar below = spheres ? 0 : 0.5*rb_;
+    const scalar reach = sqr(2*rb_ + band_);
+
+    bool woke = false;
+    DynamicList<label> stack;
+    stack.append(i);
+    bool first = true;
+    while (stack.size())
+    {
+        const label j = stack.remove();
+        if (!fixed_[j] && !first)
+        {
+            continue;
+        }
+        first = false;
+        woke = woke || fixed_[j];
+        fixed_[j] = false;
+        slowTime_[j] = 0;
+        anchorX_[j] = bodies_[j].x();
+        anchorQ_[j] = bodies_[j].q();
+
+        if (j >= neighbours_.adjacency().size())
+        {
+            continue;
+        }
+        for (const label k : neighbours_.adjacency()[j])
+        {
+            if
+            (
+                fixed_[k]
+             && bodies_[k].x().z() > bodies_[j].x().z() - below
+             && magSqr(bodies_[k].x() - bodies_[j].x()) <= reach
+            )
+            {
+                stack.append(k);
+            }
+        }
+    }
+    return woke;
 }
 
 
@@ -503,9 +590,7 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
             const scalar vn = bodies_[c.i].pointVelocity(c.p) & c.n;
             if (vn < -epsP)
             {
-                fixed_[c.k] = false;
-                slowTime_[c.k] = 0;
-                woke = true;
+                woke = wake(c.k) || woke;
             }
         }
     }
@@ -529,12 +614,12 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     }
     stats_.collisions += cr.collisions;
     stats_.impulses += cr.impulses;
+    stats_.collisionSweeps += cr.sweeps;
     forAll(woken, i)
     {
         if (woken[i])
         {
-            fixed_[i] = false;
-            slowTime_[i] = 0;
+            wake(i);
         }
     }
 
@@ -650,10 +735,19 @@ Foam::scalar Foam::rbd::world::currentMaxOverlap()
 {
     const statistics saved = stats_;
     stats_.maxOverlap = 0;
-    findContacts();
+    findContacts(true);
     const scalar current = stats_.maxOverlap;
     stats_.maxOverlap = max(saved.maxOverlap, current);
     return current;
+}
+
+
+const Foam::UList<Foam::rbd::contact>& Foam::rbd::world::allContacts()
+{
+    const statistics saved = stats_;
+    findContacts(true);
+    stats_ = saved;
+    return contacts_;
 }
 
 

@@ -10,6 +10,7 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wold-style-cast"
 #include <Eigen/SparseCholesky>
+#include <Eigen/OrderingMethods>
 #pragma GCC diagnostic pop
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -135,9 +136,19 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         inF[i] = label(guess.size()) == n ? guess[i] : b(i) < 0;
     }
 
+    // One fill-reducing (AMD) ordering of A for the whole solve: every
+    // A_FF is assembled in the order it induces on F (a principal
+    // submatrix keeps the elimination order's sparsity benefits), and
+    // factorised without ordering again
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
+    Eigen::AMDOrdering<int>()(A, order);
+
     std::vector<label> pos(n), members, infeasible;
     std::vector<Eigen::Triplet<double>> triplets;
-    Eigen::SimplicialLDLT<sparseMatrix> ldlt;
+    Eigen::SimplicialLDLT
+    <
+        sparseMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>
+    > ldlt;
     Eigen::VectorXd z(n), w(n);
 
     // Judice-Pires: block exchanges while the number of infeasible
@@ -162,8 +173,9 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     for (label iter = 0; iter < iterations; ++iter)
     {
         members.clear();
-        for (label i = 0; i < n; ++i)
+        for (label k = 0; k < n; ++k)
         {
+            const label i = order.indices()(k);
             pos[i] = inF[i] ? label(members.size()) : -1;
             if (inF[i])
             {

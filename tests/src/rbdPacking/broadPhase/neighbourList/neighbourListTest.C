@@ -63,3 +63,41 @@ TEST(neighbourList, verletListRebuildsOnlyWhenBodiesMoveHalfTheSkin)
     EXPECT_TRUE(list.update(x, 0.011));
     EXPECT_EQ(list.pairs().size(), 1);
 }
+
+
+TEST(neighbourList, adjacencyListsEachPairOnBothBodies)
+{
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(0, 0.1);
+    pointField x(300);
+    for (point& p : x)
+    {
+        p = point(U(rng), U(rng), U(rng));
+    }
+    neighbourList nl(0.002);
+    nl.update(x, 0.011);
+    const labelListList& adj = nl.adjacency();
+    ASSERT_EQ(adj.size(), x.size());
+
+    // Every pair appears on both bodies, and nothing else does
+    std::vector<std::pair<label, label>> fromAdjacency;
+    forAll(adj, i)
+    {
+        for (const label k : adj[i])
+        {
+            if (i < k)
+            {
+                fromAdjacency.emplace_back(i, k);
+            }
+            EXPECT_NE(std::find(adj[k].begin(), adj[k].end(), i), adj[k].end());
+        }
+    }
+    std::sort(fromAdjacency.begin(), fromAdjacency.end());
+    EXPECT_EQ(fromAdjacency, sorted(nl.pairs()));
+    EXPECT_GT(fromAdjacency.size(), 100u);
+
+    // A rebuild (a new body) renews it
+    x.append(point(0.05, 0.05, 0.05));
+    nl.update(x, 0.011);
+    EXPECT_EQ(nl.adjacency().size(), x.size());
+}
