@@ -324,7 +324,8 @@ def readSummary(caseDir):
 #: The closing statistics line of rbdPackBed's log
 _LOG_STATS = re.compile(
     r'Simulated (?P<t>\S+) s in (?P<steps>\d+) steps \(smallest '
-    r'(?P<minStep>\S+) s\), (?P<collisions>\d+) collisions, '
+    r'(?P<minStep>\S+) s\), (?P<collisions>\d+) collisions'
+    r'(?: \((?P<impulses>\d+) impulses in (?P<sweeps>\d+) sweeps\))?, '
     r'(?P<restingSolves>\d+) resting-contact solves \((?P<lcpIterations>\d+)'
     r' LCP iterations, largest island (?P<largestIsland>\d+) contacts, '
     r'(?P<lcpFailures>\d+) not converged\), (?P<projections>\d+) overlap '
