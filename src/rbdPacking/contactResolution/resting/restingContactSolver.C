@@ -312,11 +312,16 @@ Foam::rbd::restingContactSolver::solve
         {
             phi(a) = max(phi(a), scalar(0));
         }
-        if (!lr.converged)
+        // A solve that missed its tolerance but whose candidate violates
+        // the LCP by less than this (lcpSolver::violation, relative to the
+        // problem's scales) is used as it is: a degenerate island's best
+        // candidates stop at round-off above the tolerance
+        const scalar usableViolation = 1e-6;
+        if (!lr.converged && !(lr.maxViolation <= usableViolation))
         {
-            // No solution to the tolerance (an infeasible island: bodies
-            // jammed between contacts that accelerate into each other, or
-            // a solver that ran out of iterations): its forces may be
+            // No solution (an infeasible island: bodies jammed between
+            // contacts that accelerate into each other, or a solver that
+            // ran out of iterations far from one): its forces may be
             // arbitrarily large and would launch pellets through their
             // neighbours. Each force is clamped to what its contact needs
             // on its own, -B_a/A_aa, so the step stays bounded: a loaded

@@ -11,6 +11,7 @@
 #pragma GCC diagnostic ignored "-Wold-style-cast"
 #include <Eigen/SparseCholesky>
 #include <Eigen/OrderingMethods>
+#include <fstream>
 #pragma GCC diagnostic pop
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -157,8 +158,12 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     label fewest = n + 1;
     label chances = 3;
 
-    // Gauss-Seidel smoothing, once block exchanges cycle
+    // Gauss-Seidel smoothing, once block exchanges cycle; its candidates
+    // are accepted within ten times the tolerance: the block candidates of
+    // a degenerate island cycle at round-off just above it (see the
+    // header)
     bool smoothing = false;
+    const scalar cyclingTolerance = 10*tolerance_;
     Eigen::VectorXd fs;
     auto objective = [&](const Eigen::VectorXd& x)
     {
@@ -295,6 +300,13 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         // minimisation)
         {
             const Eigen::VectorXd zp(z.cwiseMax(0.0));
+            if (violation(A, b, zp) <= cyclingTolerance)
+            {
+                // The projected subspace solution solves it
+                z = zp;
+                result.converged = true;
+                break;
+            }
             if (objective(zp) < objective(fs))
             {
                 fs = zp;
@@ -318,12 +330,37 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
                 }
             }
         }
+        // The smoothed iterate may itself solve the problem (the block
+        // exchanges of a degenerate problem, singular A with forces and
+        // gaps both zero at some contacts, can cycle between candidates
+        // that miss the tolerance by round-off while the iterate meets it)
+        if (violation(A, b, fs) <= cyclingTolerance)
+        {
+            z = fs;
+            result.converged = true;
+            result.iterations = iter + 1;
+            break;
+        }
         for (label i = 0; i < n; ++i)
         {
             inF[i] = fs(i) > 0;
         }
     }
 
+    if (!result.converged && getenv("RBD_LCPDUMP"))
+    {
+        static label dumps = 0;
+        if (dumps < 5)
+        {
+            std::ofstream os("/tmp/lcpdump_" + std::to_string(dumps++) + ".txt");
+            os.precision(17);
+            os << n << " " << A.nonZeros() << " " << eps << "\n";
+            for (label j = 0; j < n; ++j)
+                for (sparseMatrix::InnerIterator it(A, j); it; ++it)
+                    os << it.row() << " " << j << " " << it.value() << "\n";
+            for (label j = 0; j < n; ++j) os << b(j) << " " << (label(guess.size()) == n ? label(guess[j]) : -1) << "\n";
+        }
+    }
     if (!result.converged)
     {
         if (n <= fallbackSize_)

@@ -1,6 +1,7 @@
 // Unit tests for src/rbdPacking/contactResolution/lcp/blockPivotingLCP:
 // pure block pivoting (no baraff fallback) against the enumeration
-// reference on random regular, singular and pellet-scale problems; the
+// reference on random regular, singular and pellet-scale problems, and on
+// two degenerate islands recorded from a bed; the
 // guess changes the work, not the answer; sparse and dense input agree;
 // the fallback to baraff and the report of a capped solve
 
@@ -8,6 +9,7 @@
 #include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
 #include "blockPivotingLCP.H"
 #include "enumerationLCP.H"
+#include <fstream>
 
 using namespace Foam;
 using namespace lcpTest;
@@ -196,3 +198,118 @@ TEST(blockPivotingLCP, handsAStuckSmallProblemToBaraff)
 
 
 // ************************************************************************* //
+
+
+// Two islands of 140 contacts from a 347-sphere bed at N = 5.6 (Table 3
+// properties, at 118 pellets), written by the solver when it failed them
+// (tolerance 1e-9, before candidates were accepted within ten times the
+// tolerance once the exchanges cycle): singular (rank 127 and 130), feasible
+// (checked with an LP), degenerate. File: n nnz eps, then the triplets
+// (row col value) of A, then b_i and the previous step's guess per row.
+namespace
+{
+    struct recordedIsland
+    {
+        Eigen::SparseMatrix<double> A;
+        Vec b;
+        std::vector<bool> guess;
+    };
+
+    recordedIsland readIsland(const std::string& name)
+    {
+        recordedIsland p;
+        const char* root = getenv("RBD_PACKING_DIR");
+        EXPECT_NE(root, nullptr) << "RBD_PACKING_DIR not set";
+        std::ifstream is
+        (
+            std::string(root ? root : ".")
+          + "/tests/src/rbdPacking/contactResolution/lcp/blockPivotingLCP/"
+          + "data/" + name + ".lcp"
+        );
+        EXPECT_TRUE(is.good()) << name;
+        label n = 0, nnz = 0;
+        double eps;
+        is >> n >> nnz >> eps;
+        std::vector<Eigen::Triplet<double>> t;
+        for (label k = 0; k < nnz; ++k)
+        {
+            label r, c;
+            double v;
+            is >> r >> c >> v;
+            t.emplace_back(r, c, v);
+        }
+        p.A.resize(n, n);
+        p.A.setFromTriplets(t.begin(), t.end());
+        p.b.resize(n);
+        p.guess.resize(n);
+        for (label k = 0; k < n; ++k)
+        {
+            label g;
+            is >> p.b(k) >> g;
+            p.guess[k] = g > 0;
+        }
+        EXPECT_TRUE(is.good()) << name;
+        return p;
+    }
+
+    //- Violation of f, computed here from w = A f + b: the largest of
+    //  -f_i/fRef, -w_i/wRef and |f_i w_i|/(fRef wRef)
+    double independentViolation(const recordedIsland& p, const Vec& f)
+    {
+        const Vec w(p.A*f + p.b);
+        const double wRef = p.b.cwiseAbs().maxCoeff();
+        const double fRef = f.cwiseAbs().maxCoeff();
+        return std::max
+        ({
+            -f.minCoeff()/fRef,
+            -w.minCoeff()/wRef,
+            f.cwiseProduct(w).cwiseAbs().maxCoeff()/(wRef*fRef)
+        });
+    }
+}
+
+
+TEST(blockPivotingLCP, solvesADegenerateBedIsland)
+{
+    const rbd::blockPivotingLCP pure(parse(pureDict));
+    const recordedIsland p = readIsland("bedIsland140a");
+    for (const bool warm : {true, false})
+    {
+        Vec f;
+        const rbd::lcpResult r =
+            pure.solve(p.A, p.b, warm ? p.guess : std::vector<bool>(), f);
+        EXPECT_TRUE(r.converged) << "warm " << warm;
+        EXPECT_GT(f.maxCoeff(), 0);
+        EXPECT_LE(independentViolation(p, f), 1e-8) << "warm " << warm;
+    }
+}
+
+
+TEST(blockPivotingLCP, reportsAnUnsolvedDegenerateIslandWithItsBestCandidate)
+{
+    // The second island is not solved within 1e-8 (ten times the default
+    // tolerance) by the defaults (its best candidates stop at 1.5e-8 cold
+    // and 2.5e-6 warm; with 30 smoothing sweeps the warm start solves it
+    // exactly): the solver must say so, and return its best candidate,
+    // f >= 0 with a small violation
+    const rbd::blockPivotingLCP pure(parse(pureDict));
+    const recordedIsland p = readIsland("bedIsland140b");
+    for (const bool warm : {true, false})
+    {
+        Vec f;
+        const rbd::lcpResult r =
+            pure.solve(p.A, p.b, warm ? p.guess : std::vector<bool>(), f);
+        const double v = independentViolation(p, f);
+        EXPECT_EQ(r.converged, v <= 1e-8) << "warm " << warm;
+        EXPECT_NEAR(r.maxViolation, v, 1e-12 + 1e-6*v);
+        EXPECT_GE(f.minCoeff(), 0);
+        EXPECT_LE(v, 1e-5) << "warm " << warm;
+    }
+    const rbd::blockPivotingLCP smoother
+    (
+        parse("fallbackSize 0; smoothingSweeps 30;")
+    );
+    Vec f;
+    EXPECT_TRUE(smoother.solve(p.A, p.b, p.guess, f).converged);
+    EXPECT_LE(independentViolation(p, f), 1e-8);
+}
