@@ -167,26 +167,162 @@ void Foam::rbd::meshContacts::meshMesh
         contacts.append(c);
     };
 
-    // A vertex behind the plane of the face it projects onto is inside
-    // the other body only if it is also behind the faces around that face
-    // which meet it convexly (f's corners behind their planes). At an
-    // acute edge (a tetrahedron's, 70.5 degrees) a vertex outside, in
-    // front of the neighbour face, can be behind the plane of the face and
-    // project into it: a tetrahedron's tip 0.6 mm from another was
-    // reported 0.6 mm deep. Point p, face f of the body in pose (RR, tt),
-    // all in the frame of k.
-    auto outsideNeighbours = [&]
+    // Separating axes of two local patches, as the convex hulls of their
+    // faces' corners: faces fA of the body in pose (RA, tA) and fB of the
+    // body in pose (RB, tB), frame of k; axes: the faces' normals and the
+    // cross products of their edges. Returns the least overlap of their
+    // projections (< 0: apart), or any value below floor once one is.
+    // Patches stand in for the bodies near a contact: for a convex body
+    // this is the minimum translation distance there; a nonconvex body's
+    // patch hull is larger than the body, so the overlap is never less.
+    auto patchOverlap = [&]
     (
-        const point& p, const label f, const tensor& RR, const vector& tt
+        const DynamicList<label>& fA, const tensor& RA, const vector& tA,
+        const DynamicList<label>& fB, const tensor& RB, const vector& tB,
+        const scalar floor
+    )
+    {
+        auto project = [&]
+        (
+            const DynamicList<label>& fl, const tensor& RR, const vector& tt,
+            const vector& u, scalar& lo, scalar& hi
+        )
+        {
+            lo = GREAT;
+            hi = -GREAT;
+            for (const label f : fl)
+            {
+                for (const label c : fs[f])
+                {
+                    const scalar x = ((RR & pts[c]) + tt) & u;
+                    lo = min(lo, x);
+                    hi = max(hi, x);
+                }
+            }
+        };
+        scalar least = GREAT;
+        auto along = [&](const vector& axis)
+        {
+            const scalar m = mag(axis);
+            if (m < 1e-9)
+            {
+                return false;
+            }
+            const vector u(axis/m);
+            scalar loA, hiA, loB, hiB;
+            project(fA, RA, tA, u, loA, hiA);
+            project(fB, RB, tB, u, loB, hiB);
+            least = min(least, min(hiA - loB, hiB - loA));
+            return least < floor;
+        };
+        for (const label f : fA)
+        {
+            if (along(RA & nf[f]))
+            {
+                return least;
+            }
+        }
+        for (const label f : fB)
+        {
+            if (along(RB & nf[f]))
+            {
+                return least;
+            }
+        }
+        for (const label f : fA)
+        {
+            for (label ea = 0; ea < 3; ++ea)
+            {
+                vector da
+                (
+                    RA & (pts[fs[f][(ea + 1) % 3]] - pts[fs[f][ea]])
+                );
+                da /= max(mag(da), VSMALL);
+                for (const label g : fB)
+                {
+                    for (label eb = 0; eb < 3; ++eb)
+                    {
+                        vector db
+                        (
+                            RB & (pts[fs[g][(eb + 1) % 3]] - pts[fs[g][eb]])
+                        );
+                        db /= max(mag(db), VSMALL);
+                        if (along(da ^ db))
+                        {
+                            return least;
+                        }
+                    }
+                }
+            }
+        }
+        return least;
+    };
+
+    // The faces around points a and b (b < 0: a only), each once
+    auto facesAround = [&]
+    (
+        const label a, const label b, DynamicList<label>& patch
+    )
+    {
+        patch.clear();
+        for (const label c : {a, b})
+        {
+            if (c < 0)
+            {
+                continue;
+            }
+            for (const label g : pf[c])
+            {
+                if (!patch.found(g))
+                {
+                    patch.append(g);
+                }
+            }
+        }
+    };
+
+    // A contact deeper than this is checked against the separating axes of
+    // the patches around its features (patchOverlap) [m] ...
+    const scalar checkDepth = 1e-2*band_;
+
+    // ... and dropped if they overlap by less than this part of its depth:
+    // the contact overstates the interpenetration (its normal is not the
+    // direction of least interpenetration), and a shallower contact holds
+    // the pair (the rim of a Raschig ring resting 1 um deep on another's
+    // cap, passing 0.7 mm from a side edge of the other's wall just below
+    // its top, was seen 0.7 mm deep along a horizontal normal, and the
+    // overlap correction pushed the rings 0.7 mm sideways)
+    const scalar overstated = 0.9;
+
+    // A vertex behind the plane of the face it projects onto: is the face
+    // the contact? At an acute edge (a tetrahedron's, 70.5 degrees) a
+    // vertex outside the other body, in front of a face around f that
+    // meets it convexly (f's corners behind its plane), can be behind the
+    // plane of f and project into it (a tetrahedron's tip 0.6 mm from
+    // another was reported 0.6 mm deep). Yet a vertex in front of that
+    // face can be a real contact: the other body's edge cuts through the
+    // vertex's corner (rejecting those missed tetrahedra 0.03 mm into each
+    // other). So: such a vertex, or one deeper than checkDepth, is dropped
+    // if its faces and the faces around f are apart, or overlap by less
+    // than overstated times its depth. Vertex v of the body in pose (Rv,
+    // tv), face f of the body in pose (RR, tt), depth [m], frame of k.
+    DynamicList<label> patchA, patchB;
+    auto separated = [&]
+    (
+        const label v, const tensor& Rv, const vector& tv,
+        const label f, const tensor& RR, const vector& tt,
+        const scalar depth
     )
     {
         const triFace& tf = fs[f];
         const scalar tol = 1e-9*radius_;
+        const point p((Rv & pts[v]) + tv);
+        bool inFront = false;
         for (const label c : tf)
         {
             for (const label g : pf[c])
             {
-                if (g == f)
+                if (g == f || inFront)
                 {
                     continue;
                 }
@@ -205,13 +341,28 @@ void Foam::rbd::meshContacts::meshMesh
                         break;
                     }
                 }
-                if (convex)
+                inFront = convex;
+            }
+        }
+        const bool deep = depth > checkDepth;
+        if (!inFront && !deep)
+        {
+            return false;
+        }
+        facesAround(v, -1, patchA);
+        patchB.clear();
+        for (const label c : tf)
+        {
+            for (const label g : pf[c])
+            {
+                if (!patchB.found(g))
                 {
-                    return true;
+                    patchB.append(g);
                 }
             }
         }
-        return false;
+        const scalar least = deep ? overstated*depth : 0;
+        return patchOverlap(patchA, Rv, tv, patchB, RR, tt, least) < least;
     };
 
     // Vertex v of i over face f of k
@@ -237,7 +388,7 @@ void Foam::rbd::meshContacts::meshMesh
                 break;
             }
         }
-        if (!faces || (s < 0 && outsideNeighbours(p, f, tensor::I, Zero)))
+        if (!faces || (s < 0 && separated(v, R, t, f, tensor::I, Zero, -s)))
         {
             return;
         }
@@ -272,44 +423,12 @@ void Foam::rbd::meshContacts::meshMesh
                 break;
             }
         }
-        if (!faces || (s < 0 && outsideNeighbours(p, f, R, t)))
+        if (!faces || (s < 0 && separated(v, tensor::I, Zero, f, R, t, -s)))
         {
             return;
         }
         const vector nW(Rk & -n);
         add(p - s*n, p, -n, s, wi ^ nW, nPts + v);
-    };
-
-    // Point q (frame of k) less than depth behind a third face around
-    // edge e of the body in pose (RR, tt), one that meets e convexly
-    // (not one of e's own two faces)
-    auto shallow = [&]
-    (
-        const point& q, const bodyBVH::edgeInfo& e,
-        const tensor& RR, const vector& tt, const scalar depth
-    )
-    {
-        const point a((RR & pts[e.a]) + tt);
-        const point b((RR & pts[e.b]) + tt);
-        const scalar tol = 1e-9*mag(b - a);
-        for (const label v : {e.a, e.b})
-        {
-            for (const label g : pf[v])
-            {
-                if (g == e.f1 || g == e.f2)
-                {
-                    continue;
-                }
-                const vector ng(RR & nf[g]);
-                const point o((RR & pts[fs[g][0]]) + tt);
-                const point& w = v == e.a ? b : a;
-                if (((w - o) & ng) < tol && ((q - o) & ng) > -depth)
-                {
-                    return true;
-                }
-            }
-        }
-        return false;
     };
 
     // Edge ei of i against edge ek of k
@@ -379,23 +498,16 @@ void Foam::rbd::meshContacts::meshMesh
         //    of its plane (a vertex of a tetrahedron sliding down the side
         //    of another was seen 0.8 band deep at its bottom edge while 0.2
         //    band outside the side face);
-        // 2. the closest point of each edge must be as deep behind every
-        //    third face around the other edge's ends (one that meets the
-        //    edge convexly) as it is behind the edge's own faces at the
-        //    least, kappa times the depth, kappa = min n . n_f of the own
-        //    faces (its depth behind them: n is in the edge's normal cone):
-        //    a third face nearer than that holds the point out by less
-        //    than the depth along n (the rim of a Raschig ring resting 1 um
-        //    deep on another's cap, passing 0.7 mm from a side edge of the
-        //    other's wall just below its top, was seen 0.7 mm deep along
-        //    a horizontal normal, and the overlap correction pushed the
-        //    rings 0.7 mm sideways).
-        // The closest point itself may be in front of an own face of the
-        // other edge where that edge is acute (a tetrahedron's, 70.5
-        // degrees) and n is near the other face's normal: the edge dives
-        // under that face and crosses the wedge's other face first; the
-        // contact is real (rejecting it let tetrahedra sink 0.6 mm into
-        // each other unseen).
+        // 2. deeper than checkDepth, the patches around the two edges
+        //    (the faces around their ends) must overlap by overstated
+        //    times the depth: along another axis the bodies separate
+        //    sooner, and the depth along n overstates (patchOverlap).
+        // Not asked: that the closest points are inside the other body.
+        // At an acute edge (a tetrahedron's, 70.5 degrees) the closest
+        // point may be in front of the other edge's face while the edges
+        // cross (rejecting those let tetrahedra sink 0.6 mm into each
+        // other unseen), and near the end of an edge it may be outside the
+        // face there while the edge cuts off the other's corner.
         if (gap < 0)
         {
             // The vertices of the faces of edge e (pose RR, tt) all in
@@ -440,26 +552,20 @@ void Foam::rbd::meshContacts::meshMesh
                 }
             }
 
-            // Depth behind the third faces, with a relative slack for
-            // faces in the planes of the own faces
-            const scalar depthK =
-                (1 - 1e-6)*(-gap)*max
-                (
-                    min(n & nf[eK.f1], n & nf[eK.f2]), scalar(0)
-                );
-            const scalar depthI =
-                (1 - 1e-6)*(-gap)*max
-                (
-                    min(-n & (R & nf[eI.f1]), -n & (R & nf[eI.f2])),
-                    scalar(0)
-                );
-            if
-            (
-                shallow(cI, eK, tensor::I, Zero, depthK)
-             || shallow(cK, eI, R, t, depthI)
-            )
+            // 2. the patches around both edges overlap by the depth
+            if (-gap > checkDepth)
             {
-                return;
+                facesAround(eI.a, eI.b, patchA);
+                facesAround(eK.a, eK.b, patchB);
+                const scalar least = -overstated*gap;
+                if
+                (
+                    patchOverlap(patchA, R, t, patchB, tensor::I, Zero, least)
+                  < least
+                )
+                {
+                    return;
+                }
             }
         }
 
@@ -528,20 +634,21 @@ void Foam::rbd::meshContacts::meshMesh
                 }
             }
         }
-        // Inside, as deep behind the faces around the edge's ends as
-        // behind its own (see edgeEdge, check 2): a vertex behind both
+        // Inside, deeper than checkDepth: the patches around the vertex
+        // and the edge must overlap by the depth (a vertex behind both
         // faces of a tetrahedron's edge but beyond a third one, outside,
-        // was reported 0.5 mm deep
-        if (gap < 0)
+        // was reported 0.5 mm deep)
+        if (gap < 0 && dist > checkDepth)
         {
-            const scalar depth =
-                (1 - 1e-6)*dist*max(min(n & n1, n & n2), scalar(0));
-            if
-            (
+            patchA.clear();
+            patchA.append(faces);
+            facesAround(eInfo.a, eInfo.b, patchB);
+            const scalar least = overstated*dist;
+            const scalar ov =
                 onI
-              ? shallow(p, eInfo, tensor::I, Zero, depth)
-              : shallow(p, eInfo, R, t, depth)
-            )
+              ? patchOverlap(patchA, R, t, patchB, tensor::I, Zero, least)
+              : patchOverlap(patchA, tensor::I, Zero, patchB, R, t, least);
+            if (ov < least)
             {
                 return false;
             }
@@ -1107,8 +1214,8 @@ void Foam::rbd::meshContacts::reduce
             };
             corners();
 
-            // The points within a fifth of the tier of the tier's deepest
-            // are all kept, up to maxKeepAll of them: next to a point of
+            // The points of the first tier within a fifth of the tier of
+            // the deepest are all kept, up to maxKeepAll: next to a point of
             // support, a curved or tilted support (the rim of a polygonal
             // cylinder rolling or rocking on a plane) has points about to
             // touch that are not corners of the tier (rim vertices inside
@@ -1179,7 +1286,7 @@ void Foam::rbd::meshContacts::reduce
             {
                 nNear += cs[a].gap - cs[level.front()].gap < 0.2*tier;
             }
-            if (nNear <= maxKeepAll)
+            if (t == 0 && nNear <= maxKeepAll)
             {
                 for (const label a : level)
                 {

@@ -28,6 +28,7 @@
 
 using namespace rbdTest;
 
+
 namespace
 {
     const scalar dp = 0.01;
