@@ -12,6 +12,8 @@ const Foam::scalar Foam::rbd::meshContacts::clusterAngle =
 
 const Foam::label Foam::rbd::meshContacts::nTiers = 3;
 
+const Foam::label Foam::rbd::meshContacts::maxKeepAll = 8;
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -165,6 +167,204 @@ void Foam::rbd::meshContacts::meshMesh
         contacts.append(c);
     };
 
+    // Separating axes of two local patches, as the convex hulls of their
+    // faces' corners: faces fA of the body in pose (RA, tA) and fB of the
+    // body in pose (RB, tB), frame of k; axes: the faces' normals and the
+    // cross products of their edges. Returns the least overlap of their
+    // projections (< 0: apart), or any value below floor once one is.
+    // Patches stand in for the bodies near a contact: for a convex body
+    // this is the minimum translation distance there; a nonconvex body's
+    // patch hull is larger than the body, so the overlap is never less.
+    auto patchOverlap = [&]
+    (
+        const DynamicList<label>& fA, const tensor& RA, const vector& tA,
+        const DynamicList<label>& fB, const tensor& RB, const vector& tB,
+        const scalar floor
+    )
+    {
+        auto project = [&]
+        (
+            const DynamicList<label>& fl, const tensor& RR, const vector& tt,
+            const vector& u, scalar& lo, scalar& hi
+        )
+        {
+            lo = GREAT;
+            hi = -GREAT;
+            for (const label f : fl)
+            {
+                for (const label c : fs[f])
+                {
+                    const scalar x = ((RR & pts[c]) + tt) & u;
+                    lo = min(lo, x);
+                    hi = max(hi, x);
+                }
+            }
+        };
+        scalar least = GREAT;
+        auto along = [&](const vector& axis)
+        {
+            const scalar m = mag(axis);
+            if (m < 1e-9)
+            {
+                return false;
+            }
+            const vector u(axis/m);
+            scalar loA, hiA, loB, hiB;
+            project(fA, RA, tA, u, loA, hiA);
+            project(fB, RB, tB, u, loB, hiB);
+            least = min(least, min(hiA - loB, hiB - loA));
+            return least < floor;
+        };
+        for (const label f : fA)
+        {
+            if (along(RA & nf[f]))
+            {
+                return least;
+            }
+        }
+        for (const label f : fB)
+        {
+            if (along(RB & nf[f]))
+            {
+                return least;
+            }
+        }
+        for (const label f : fA)
+        {
+            for (label ea = 0; ea < 3; ++ea)
+            {
+                vector da
+                (
+                    RA & (pts[fs[f][(ea + 1) % 3]] - pts[fs[f][ea]])
+                );
+                da /= max(mag(da), VSMALL);
+                for (const label g : fB)
+                {
+                    for (label eb = 0; eb < 3; ++eb)
+                    {
+                        vector db
+                        (
+                            RB & (pts[fs[g][(eb + 1) % 3]] - pts[fs[g][eb]])
+                        );
+                        db /= max(mag(db), VSMALL);
+                        if (along(da ^ db))
+                        {
+                            return least;
+                        }
+                    }
+                }
+            }
+        }
+        return least;
+    };
+
+    // The faces around points a and b (b < 0: a only), each once
+    auto facesAround = [&]
+    (
+        const label a, const label b, DynamicList<label>& patch
+    )
+    {
+        patch.clear();
+        for (const label c : {a, b})
+        {
+            if (c < 0)
+            {
+                continue;
+            }
+            for (const label g : pf[c])
+            {
+                if (!patch.found(g))
+                {
+                    patch.append(g);
+                }
+            }
+        }
+    };
+
+    // A contact deeper than this is checked against the separating axes of
+    // the patches around its features (patchOverlap) [m] ...
+    const scalar checkDepth = 1e-2*band_;
+
+    // ... and dropped if they overlap by less than this part of its depth:
+    // the contact overstates the interpenetration (its normal is not the
+    // direction of least interpenetration), and a shallower contact holds
+    // the pair (the rim of a Raschig ring resting 1 um deep on another's
+    // cap, passing 0.7 mm from a side edge of the other's wall just below
+    // its top, was seen 0.7 mm deep along a horizontal normal, and the
+    // overlap correction pushed the rings 0.7 mm sideways)
+    const scalar overstated = 0.9;
+
+    // A vertex behind the plane of the face it projects onto: is the face
+    // the contact? At an acute edge (a tetrahedron's, 70.5 degrees) a
+    // vertex outside the other body, in front of a face around f that
+    // meets it convexly (f's corners behind its plane), can be behind the
+    // plane of f and project into it (a tetrahedron's tip 0.6 mm from
+    // another was reported 0.6 mm deep). Yet a vertex in front of that
+    // face can be a real contact: the other body's edge cuts through the
+    // vertex's corner (rejecting those missed tetrahedra 0.03 mm into each
+    // other). So: such a vertex, or one deeper than checkDepth, is dropped
+    // if its faces and the faces around f are apart, or overlap by less
+    // than overstated times its depth. Vertex v of the body in pose (Rv,
+    // tv), face f of the body in pose (RR, tt), depth [m], frame of k.
+    DynamicList<label> patchA, patchB;
+    auto separated = [&]
+    (
+        const label v, const tensor& Rv, const vector& tv,
+        const label f, const tensor& RR, const vector& tt,
+        const scalar depth
+    )
+    {
+        const triFace& tf = fs[f];
+        const scalar tol = 1e-9*radius_;
+        const point p((Rv & pts[v]) + tv);
+        bool inFront = false;
+        for (const label c : tf)
+        {
+            for (const label g : pf[c])
+            {
+                if (g == f || inFront)
+                {
+                    continue;
+                }
+                const vector ng(RR & nf[g]);
+                const point o((RR & pts[fs[g][0]]) + tt);
+                if (((p - o) & ng) <= tol)
+                {
+                    continue;
+                }
+                bool convex = true;
+                for (const label w : tf)
+                {
+                    if ((((RR & pts[w]) + tt - o) & ng) > tol)
+                    {
+                        convex = false;
+                        break;
+                    }
+                }
+                inFront = convex;
+            }
+        }
+        const bool deep = depth > checkDepth;
+        if (!inFront && !deep)
+        {
+            return false;
+        }
+        facesAround(v, -1, patchA);
+        patchB.clear();
+        for (const label c : tf)
+        {
+            for (const label g : pf[c])
+            {
+                if (!patchB.found(g))
+                {
+                    patchB.append(g);
+                }
+            }
+        }
+        const scalar least = deep ? overstated*depth : 0;
+        return patchOverlap(patchA, Rv, tv, patchB, RR, tt, least) < least;
+    };
+
     // Vertex v of i over face f of k
     auto vertexOfI = [&](const label v, const point& p, const label f)
     {
@@ -188,7 +388,7 @@ void Foam::rbd::meshContacts::meshMesh
                 break;
             }
         }
-        if (!faces)
+        if (!faces || (s < 0 && separated(v, R, t, f, tensor::I, Zero, -s)))
         {
             return;
         }
@@ -223,7 +423,7 @@ void Foam::rbd::meshContacts::meshMesh
                 break;
             }
         }
-        if (!faces)
+        if (!faces || (s < 0 && separated(v, tensor::I, Zero, f, R, t, -s)))
         {
             return;
         }
@@ -288,49 +488,84 @@ void Foam::rbd::meshContacts::meshMesh
             return;
         }
 
-        // Crossing edges: each closest point must be inside the other body
-        // as far as the faces around the other edge's ends tell (behind
-        // the planes of those that hold the edge behind them, i.e. meet it
-        // convexly). Lines that pass each other inside both wedges but
-        // beyond a third face are apart: the depth along e_i x e_k then is
-        // no depth (a vertex of a tetrahedron sliding down the side of
-        // another was seen 0.8 band deep at its bottom edge while 0.2 band
-        // outside its side face)
+        // Crossing edges (gap < 0). With n in both normal cones each edge
+        // is the other body's extreme feature along n, so -gap is the
+        // overlap of the two bodies' projections on n: the depth along n,
+        // at least the true depth, and no depth at all when another axis
+        // separates them. Two checks against the faces near the edges:
+        // 1. separating faces: a face of an edge separates the bodies when
+        //    the other edge's faces (its local vertices) are all in front
+        //    of its plane (a vertex of a tetrahedron sliding down the side
+        //    of another was seen 0.8 band deep at its bottom edge while 0.2
+        //    band outside the side face);
+        // 2. deeper than checkDepth, the patches around the two edges
+        //    (the faces around their ends) must overlap by overstated
+        //    times the depth: along another axis the bodies separate
+        //    sooner, and the depth along n overstates (patchOverlap).
+        // Not asked: that the closest points are inside the other body.
+        // At an acute edge (a tetrahedron's, 70.5 degrees) the closest
+        // point may be in front of the other edge's face while the edges
+        // cross (rejecting those let tetrahedra sink 0.6 mm into each
+        // other unseen), and near the end of an edge it may be outside the
+        // face there while the edge cuts off the other's corner.
         if (gap < 0)
         {
-            // Point q (frame of k) in front of a face around edge e of the
-            // body in pose (RR, tt) that meets e convexly
-            auto outside = [&]
+            // The vertices of the faces of edge e (pose RR, tt) all in
+            // front of the plane (o, m): that plane separates
+            auto inFront = [&]
             (
-                const point& q, const bodyBVH::edgeInfo& e,
-                const tensor& RR, const vector& tt
+                const bodyBVH::edgeInfo& e, const tensor& RR,
+                const vector& tt, const point& o, const vector& m
             )
             {
-                const point a((RR & pts[e.a]) + tt);
-                const point b((RR & pts[e.b]) + tt);
-                const scalar tol = 1e-9*mag(b - a);
-                for (const label v : {e.a, e.b})
+                for (const label f : {e.f1, e.f2})
                 {
-                    for (const label g : pf[v])
+                    for (const label v : fs[f])
                     {
-                        const vector ng(RR & nf[g]);
-                        const point o((RR & pts[fs[g][0]]) + tt);
-                        const point& w = v == e.a ? b : a;
-                        if (((w - o) & ng) < tol && ((q - o) & ng) > 0)
+                        if ((((RR & pts[v]) + tt - o) & m) < 0)
                         {
-                            return true;
+                            return false;
                         }
                     }
                 }
-                return false;
+                return true;
             };
-            if
-            (
-                outside(cI, eK, tensor::I, Zero)
-             || outside(cK, eI, R, t)
-            )
+            for (const label f : {eK.f1, eK.f2})
             {
-                return;
+                if (inFront(eI, R, t, pts[fs[f][0]], nf[f]))
+                {
+                    return;
+                }
+            }
+            for (const label f : {eI.f1, eI.f2})
+            {
+                if
+                (
+                    inFront
+                    (
+                        eK, tensor::I, Zero, moved(fs[f][0], R, t),
+                        R & nf[f]
+                    )
+                )
+                {
+                    return;
+                }
+            }
+
+            // 2. the patches around both edges overlap by the depth
+            if (-gap > checkDepth)
+            {
+                facesAround(eI.a, eI.b, patchA);
+                facesAround(eK.a, eK.b, patchB);
+                const scalar least = -overstated*gap;
+                if
+                (
+                    patchOverlap(patchA, R, t, patchB, tensor::I, Zero, least)
+                  < least
+                )
+                {
+                    return;
+                }
             }
         }
 
@@ -346,13 +581,14 @@ void Foam::rbd::meshContacts::meshMesh
     };
 
     // A vertex p of one body (neighbour points q, frame of k) against a
-    // feature edge (a, d, cone u1, u2, outward o) of the other, the closest
-    // point inside the edge: n = +-(p - c)/|p - c| out of the edge, in the
-    // edge's normal cone, the vertex extreme along -n
+    // feature edge (a, d, cone u1, u2, face normals n1, n2) of the other,
+    // the closest point inside the edge: n = +-(p - c)/|p - c| out of the
+    // edge, in the edge's normal cone, the vertex extreme along -n
     auto vertexEdge =
     [&](const point& p, const labelList& faces, const bool onI,
+        const bodyBVH::edgeInfo& eInfo,
         const point& a, const vector& d, const vector& u1, const vector& u2,
-        const vector& o, point& c, vector& n, scalar& gap)
+        const vector& n1, const vector& n2, point& c, vector& n, scalar& gap)
     {
         const scalar dd = d & d;
         const scalar s = ((p - a) & d)/dd;
@@ -369,7 +605,11 @@ void Foam::rbd::meshContacts::meshMesh
         }
         n = r/dist;
         gap = dist;
-        if ((n & o) < 0)
+        // Inside: behind the planes of both faces of the edge (not just
+        // against its mean outward direction: at an acute edge, 70.5
+        // degrees for a tetrahedron, a point in front of one face can be
+        // against it, and a vertex outside was reported 0.5 mm deep)
+        if ((r & n1) < 0 && (r & n2) < 0)
         {
             n = -n;
             gap = -dist;
@@ -392,6 +632,25 @@ void Foam::rbd::meshContacts::meshMesh
                 {
                     return false;
                 }
+            }
+        }
+        // Inside, deeper than checkDepth: the patches around the vertex
+        // and the edge must overlap by the depth (a vertex behind both
+        // faces of a tetrahedron's edge but beyond a third one, outside,
+        // was reported 0.5 mm deep)
+        if (gap < 0 && dist > checkDepth)
+        {
+            patchA.clear();
+            patchA.append(faces);
+            facesAround(eInfo.a, eInfo.b, patchB);
+            const scalar least = overstated*dist;
+            const scalar ov =
+                onI
+              ? patchOverlap(patchA, R, t, patchB, tensor::I, Zero, least)
+              : patchOverlap(patchA, tensor::I, Zero, patchB, R, t, least);
+            if (ov < least)
+            {
+                return false;
             }
         }
         return true;
@@ -461,8 +720,8 @@ void Foam::rbd::meshContacts::meshMesh
                     (
                         vertexEdge
                         (
-                            p, pf[v], true, pts[e.a], pts[e.b] - pts[e.a],
-                            e.u1, e.u2, e.outward, cE, nE, gE
+                            p, pf[v], true, e, pts[e.a], pts[e.b] - pts[e.a],
+                            e.u1, e.u2, nf[e.f1], nf[e.f2], cE, nE, gE
                         )
                     )
                     {
@@ -485,8 +744,9 @@ void Foam::rbd::meshContacts::meshMesh
                     (
                         vertexEdge
                         (
-                            p, pf[v], false, a, moved(e.b, R, t) - a,
-                            R & e.u1, R & e.u2, R & e.outward, cE, nE, gE
+                            p, pf[v], false, e, a, moved(e.b, R, t) - a,
+                            R & e.u1, R & e.u2, R & nf[e.f1], R & nf[e.f2],
+                            cE, nE, gE
                         )
                     )
                     {
@@ -844,10 +1104,20 @@ void Foam::rbd::meshContacts::reduce
 
     contacts.setSize(start);
     std::vector<label> level;
+    std::vector<label> kept;
     for (const auto& g : groups)
     {
         const vector& nG = cs[g.front()].n;
         const scalar g0 = cs[g.front()].gap;
+        kept.clear();
+
+        // Tangential position relative to the group's deepest point
+        const point& pG = cs[g.front()].p;
+        auto tang = [&](const label a)
+        {
+            const vector d(cs[a].p - pG);
+            return d - nG*(nG & d);
+        };
 
         for (label t = 0; t < (tier > 0 ? nTiers : 1); ++t)
         {
@@ -865,86 +1135,175 @@ void Foam::rbd::meshContacts::reduce
             {
                 continue;
             }
-            const point& p0 = cs[level.front()].p;
 
-            // Tangential position relative to the deepest point
-            auto tang = [&](const label a)
+            // The corners of the tier
+            const label first = kept.size();
+            auto corners = [&]()
             {
-                const vector d(cs[a].p - p0);
-                return d - nG*(nG & d);
-            };
+                const vector o(tang(level.front()));
+                auto rel = [&](const label a) { return tang(a) - o; };
 
-            // 1. the deepest point
-            contacts.append(cs[level.front()]);
-            if (level.size() == 1)
-            {
-                continue;
-            }
+                // 1. the deepest point
+                kept.push_back(level.front());
 
-            // 2. the farthest from it
-            label a1 = -1;
-            scalar best = mergeDistance;
-            for (const label a : level)
-            {
-                const scalar d = mag(tang(a));
-                if (d > best)
+                // 2. the farthest from it
+                label a1 = -1;
+                scalar best = mergeDistance;
+                for (const label a : level)
                 {
-                    best = d;
-                    a1 = a;
+                    const scalar d = mag(rel(a));
+                    if (d > best)
+                    {
+                        best = d;
+                        a1 = a;
+                    }
                 }
-            }
-            if (a1 < 0)
-            {
-                continue;
-            }
-            contacts.append(cs[a1]);
-            const vector e1(tang(a1));
-
-            // 3. the largest triangle
-            label a2 = -1;
-            best = mergeDistance*mag(e1);
-            vector side(Zero);
-            for (const label a : level)
-            {
-                const vector cr(e1 ^ tang(a));
-                const scalar area = mag(cr);
-                if (area > best)
+                if (a1 < 0)
                 {
-                    best = area;
-                    a2 = a;
-                    side = cr;
+                    return;
                 }
-            }
-            if (a2 < 0)
-            {
-                continue;
-            }
-            contacts.append(cs[a2]);
+                kept.push_back(a1);
+                const vector e1(rel(a1));
 
-            // 4. the largest area added outside the triangle (0, 1, 2)
-            const vector corner[3] = {Zero, e1, tang(a2)};
-            const vector up(side/mag(side));
-            label a3 = -1;
-            best = mergeDistance*mag(e1);
-            for (const label a : level)
-            {
-                const vector q(tang(a));
-                for (label j = 0; j < 3; ++j)
+                // 3. the largest triangle
+                label a2 = -1;
+                best = mergeDistance*mag(e1);
+                vector side(Zero);
+                for (const label a : level)
                 {
-                    const vector& u = corner[j];
-                    const vector& w = corner[(j + 1) % 3];
-                    // Positive when q lies outside edge (u, w)
-                    const scalar area = -(((w - u) ^ (q - u)) & up);
+                    const vector cr(e1 ^ rel(a));
+                    const scalar area = mag(cr);
                     if (area > best)
                     {
                         best = area;
-                        a3 = a;
+                        a2 = a;
+                        side = cr;
+                    }
+                }
+                if (a2 < 0)
+                {
+                    return;
+                }
+                kept.push_back(a2);
+
+                // 4. the largest area added outside the triangle (0, 1, 2)
+                const vector corner[3] = {Zero, e1, rel(a2)};
+                const vector up(side/mag(side));
+                label a3 = -1;
+                best = mergeDistance*mag(e1);
+                for (const label a : level)
+                {
+                    const vector q(rel(a));
+                    for (label j = 0; j < 3; ++j)
+                    {
+                        const vector& u = corner[j];
+                        const vector& w = corner[(j + 1) % 3];
+                        // Positive when q lies outside edge (u, w)
+                        const scalar area = -(((w - u) ^ (q - u)) & up);
+                        if (area > best)
+                        {
+                            best = area;
+                            a3 = a;
+                        }
+                    }
+                }
+                if (a3 >= 0)
+                {
+                    kept.push_back(a3);
+                }
+            };
+            corners();
+
+            // The points of the first tier within a fifth of the tier of
+            // the deepest are all kept, up to maxKeepAll: next to a point of
+            // support, a curved or tilted support (the rim of a polygonal
+            // cylinder rolling or rocking on a plane) has points about to
+            // touch that are not corners of the tier (rim vertices inside
+            // the rim's plane); dropped, each landed unseen up to 10 um
+            // deep, and the overlap correction that lifted it out kept the
+            // cylinder rolling. More of them: a flat patch, whose corners
+            // hold it.
+            // Not those between kept ones (tangentially) and not below the
+            // gap interpolated from them, which a rigid motion cannot
+            // bring to touch first (the middle of a line of support).
+            auto covered = [&](const label a)
+            {
+                const vector x(tang(a));
+                const scalar ga = cs[a].gap + 1e-9*tier;
+                const label nK = kept.size();
+                for (label j = 0; j < nK; ++j)
+                {
+                    const vector xj(tang(kept[j]));
+                    const scalar gj = cs[kept[j]].gap;
+                    if (mag(x - xj) <= mergeDistance)
+                    {
+                        return true;
+                    }
+                    for (label l = j + 1; l < nK; ++l)
+                    {
+                        const vector xl(tang(kept[l]));
+                        const scalar gl = cs[kept[l]].gap;
+                        const vector d(xl - xj);
+                        const scalar u = ((x - xj) & d)/max(magSqr(d), VSMALL);
+                        if
+                        (
+                            u >= 0 && u <= 1
+                         && mag(x - xj - u*d) <= mergeDistance
+                         && ga >= gj + u*(gl - gj)
+                        )
+                        {
+                            return true;
+                        }
+                        for (label m = l + 1; m < nK; ++m)
+                        {
+                            const vector xm(tang(kept[m]));
+                            const vector cr(d ^ (xm - xj));
+                            const scalar area2 = magSqr(cr);
+                            if (area2 <= sqr(sqr(mergeDistance)))
+                            {
+                                continue;
+                            }
+                            // Barycentric coordinates of x in (j, l, m)
+                            const scalar bl =
+                                (((x - xj) ^ (xm - xj)) & cr)/area2;
+                            const scalar bm = ((d ^ (x - xj)) & cr)/area2;
+                            const scalar bj = 1 - bl - bm;
+                            if
+                            (
+                                bj >= 0 && bl >= 0 && bm >= 0
+                             && ga >= bj*gj + bl*gl + bm*cs[kept[m]].gap
+                            )
+                            {
+                                return true;
+                            }
+                        }
+                    }
+                }
+                return false;
+            };
+            label nNear = 0;
+            for (const label a : level)
+            {
+                nNear += cs[a].gap - cs[level.front()].gap < 0.2*tier;
+            }
+            if (t == 0 && nNear <= maxKeepAll)
+            {
+                for (const label a : level)
+                {
+                    if (cs[a].gap - cs[level.front()].gap >= 0.2*tier)
+                    {
+                        break;
+                    }
+                    if (!covered(a))
+                    {
+                        kept.push_back(a);
                     }
                 }
             }
-            if (a3 >= 0)
+
+            for (size_t j = first; j < kept.size(); ++j)
             {
-                contacts.append(cs[a3]);
+                contacts.append(cs[kept[j]]);
             }
         }
     }

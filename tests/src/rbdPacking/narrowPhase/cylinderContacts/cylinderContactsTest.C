@@ -167,7 +167,10 @@ TEST(cylinderContacts, meshAndExactContactsAgreeOnTheFloor)
 
         ASSERT_GE(exact.size(), 1);
         ASSERT_GE(mesh.size(), 1);
-        EXPECT_LE(mesh.size(), 4);
+        // Reduced: a flat patch to its corners; a line of support (lying
+        // on its side: two lines of vertices, 0.2 mm apart in gap, in two
+        // tiers) to its two ends and the deepest point of each tier
+        EXPECT_LE(mesh.size(), 6) << "tilt " << tilt;
         EXPECT_GE(minGap(mesh), minGap(exact) - 1e-12) << "tilt " << tilt;
         EXPECT_LE(minGap(mesh), minGap(exact) + sagitta) << "tilt " << tilt;
     }

@@ -1,13 +1,15 @@
 // Mesh contacts of src/rbdPacking/narrowPhase/meshContacts against closed
 // forms: cube on the floor (4 corners), two boxes edge on edge, a vertex on
 // a face, face on face interpenetrating, sphere against a mesh sphere, and
-// the reduction of a flat patch to its corners.
+// the reduction of a flat patch to its corners; against brute force:
+// washers touching or crossing, convex pairs against separating axes.
 
 #include <gtest/gtest.h>
 #include "meshContacts.H"
 #include "sphereContacts.H"
 #include "pelletMeshes.H"
 #include "../../shapes/meshing/testMeshes.H"
+#include "../../testTools/penetrationProbe.H"
 
 using namespace Foam;
 using namespace Foam::rbd;
@@ -448,4 +450,116 @@ TEST(meshContacts, washersTouchingOrCrossingAreNeverMissed)
         }
     }
     EXPECT_EQ(missed, 0);
+}
+
+
+TEST(meshContacts, convexPairsAgreeWithSeparatingAxes)
+{
+    // Two convex pellets of one mesh at random orientations, brought
+    // together along a random direction to the first touch (bisection on
+    // the exact penetration depth delta of the separating axis theorem,
+    // testTools/penetrationProbe.H, independent of meshMesh), then 10 % of
+    // the band apart and 5 % of the band into each other:
+    // - apart: no contact interpenetrates;
+    // - into: no contact is deeper than delta (a deeper one is pushed out
+    //   by the overlap correction along its normal, which is then not the
+    //   direction of least interpenetration: pellets were pushed sideways)
+    //   to within 1 % of the band; for the cylinder (d = h = 10 mm, 300
+    //   faces) the deepest contact is delta to within 1 % of the band.
+    // The regular tetrahedron (edge 10 mm, acute edges, 70.5 degrees) is
+    // the hard case: measured over 400 poses, 1 at 5 % of the band is seen
+    // shallower than delta (0.017 for 0.035 band) and 8 at 20 % (the
+    // cylinder: none at 5 %, 3 shallower at 20 %), none deeper, none
+    // missed; the narrow phase before this test was wrong for 162 and 171
+    // of the 400 tetrahedra poses, most of them missed.
+    const scalar e = 0.01;
+    const pointField tetPts
+    ({
+        point(0, 0, 0), point(e, 0, 0),
+        point(0.5*e, 0.5*Foam::sqrt(3.0)*e, 0),
+        point(0.5*e, Foam::sqrt(3.0)/6*e, Foam::sqrt(2.0/3.0)*e)
+    });
+    List<triFace> tetFaces(4);
+    tetFaces[0] = triFace(0, 2, 1);
+    tetFaces[1] = triFace(0, 1, 3);
+    tetFaces[2] = triFace(1, 2, 3);
+    tetFaces[3] = triFace(0, 3, 2);
+    triMesh tet(tetPts, tetFaces);
+    tet.transform(tensor::I, -sum(tetPts)/4.0);
+    const triMesh cyl(pelletMeshes::cylinder(0.01, 0.01, 300));
+
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-1, 1);
+    auto randomQ = [&]()
+    {
+        const vector axis(U(rng), U(rng), U(rng));
+        return quaternion(axis/mag(axis), 3*U(rng));
+    };
+
+    const triMesh* meshes[] = {&tet, &cyl};
+    for (const triMesh* m : meshes)
+    {
+        const bool isTet = m == &tet;
+        const scalar lambda = 0.1*m->boundingRadius();
+        const meshContacts mc(*m, lambda);
+
+        // (the cylinder as a prism: its side faces' edges share one
+        // direction, which keeps the axes few)
+        const rbdTest::penetrationProbe probe
+        (
+            isTet
+          ? rbdTest::penetrationProbe
+            (
+                *m, rbdTest::penetrationProbe::convexTag()
+            )
+          : rbdTest::penetrationProbe(*m)
+        );
+
+        label bad = 0;
+        for (label pose = 0; pose < 100; ++pose)
+        {
+            const quaternion qi(randomQ()), qk(randomQ());
+            vector d(U(rng), U(rng), U(rng));
+            d /= mag(d);
+            const rigidBody bk(body(Zero, qk));
+
+            scalar lo = 0, hi = 2.2*m->boundingRadius();
+            for (label it = 0; it < 60; ++it)
+            {
+                const scalar mid = 0.5*(lo + hi);
+                (probe.penetration(body(mid*d, qi), bk) > 0 ? lo : hi) = mid;
+            }
+
+            for (const scalar into : {-0.1, 0.05})
+            {
+                const rigidBody bi(body((hi - into*lambda)*d, qi));
+                const scalar delta = probe.penetration(bi, bk);
+                DynamicList<contact> cs;
+                mc.meshMesh(1, bi, 0, bk, cs);
+                scalar deepest = -GREAT;
+                for (const contact& c : cs)
+                {
+                    deepest = max(deepest, -c.gap);
+                }
+                const bool ok =
+                    into < 0
+                  ? deepest <= 0
+                  : (
+                        deepest <= delta + 1e-2*lambda
+                     && (isTet || deepest >= delta - 1e-2*lambda)
+                    );
+                if (!ok)
+                {
+                    ++bad;
+                    ADD_FAILURE()
+                        << (isTet ? "tetrahedra" : "cylinders")
+                        << " pose " << pose << " into " << into
+                        << ": deepest contact/lambda " << deepest/lambda
+                        << ", depth/lambda " << delta/lambda
+                        << ", contacts " << cs.size();
+                }
+            }
+        }
+        EXPECT_EQ(bad, 0);
+    }
 }
