@@ -471,9 +471,9 @@ void Foam::rbd::world::updateSleep(const scalar h)
     }
     const scalar drift = vSleep*controls_.sleepTime;
 
-    // Pellets resting on an awake pellet: the contact normal, from the
-    // other pellet towards this one, points up
-    boolList awakeSupport(bodies_.size(), false);
+    // Who rests on whom: a contact whose normal, from the other pellet
+    // towards this one, points up
+    std::vector<std::pair<label, label>> restsOn;
     for (const contact& c : contacts_)
     {
         if (c.k < 0)
@@ -482,11 +482,11 @@ void Foam::rbd::world::updateSleep(const scalar h)
         }
         if (c.n.z() > 0 && !fixed_[c.k])
         {
-            awakeSupport[c.i] = true;
+            restsOn.emplace_back(c.i, c.k);
         }
         else if (c.n.z() < 0 && !fixed_[c.i])
         {
-            awakeSupport[c.k] = true;
+            restsOn.emplace_back(c.k, c.i);
         }
     }
 
@@ -521,8 +521,35 @@ void Foam::rbd::world::updateSleep(const scalar h)
         }
 
         slowTime_[i] += h;
-        if (slowTime_[i] >= controls_.sleepTime && !awakeSupport[i])
+    }
+
+    // The still pellets that may sleep: each rests only on sleepers, the
+    // container or other pellets that fall asleep with it (pellets resting
+    // on each other, as interlocked rings do, sleep together), found by
+    // removing the still pellets that rest on a pellet staying awake until
+    // none is left
+    boolList sleeps(bodies_.size(), false);
+    forAll(bodies_, i)
+    {
+        sleeps[i] = !fixed_[i] && slowTime_[i] >= controls_.sleepTime;
+    }
+    for (bool removed = true; removed; )
+    {
+        removed = false;
+        for (const auto& pr : restsOn)
         {
+            if (sleeps[pr.first] && !sleeps[pr.second])
+            {
+                sleeps[pr.first] = false;
+                removed = true;
+            }
+        }
+    }
+    forAll(bodies_, i)
+    {
+        if (sleeps[i])
+        {
+            rigidBody& b = bodies_[i];
             fixed_[i] = true;
             b.setState(b.x(), b.q(), Zero, Zero);
         }
