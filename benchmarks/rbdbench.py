@@ -813,11 +813,24 @@ class Report:
                     'CPU [s]', 'peak memory [MiB]']
                    + [h for h, _ in extra] + ['commit'])
         body = []
+        stopped = False
+
+        def sumOrLog(r, key, logKey, spec):
+            # a run that did not finish has no summary: its last progress
+            # line says how far it got (marked *)
+            nonlocal stopped
+            if r.get(key) is not None or r.get(logKey) is None:
+                return fmt(r.get(key), spec)
+            stopped = True
+            return fmt(r.get(logKey), spec) + ' *'
+
         for r in rows:
             body.append([r['case'], r.get('status'),
-                         fmt(r.get('pellets')), fmt(r.get('steps')),
-                         fmt(r.get('simulatedTime'), '%.3g'),
-                         fmt(r.get('wallTime'), '%.1f'),
+                         fmt(r.get('pellets')),
+                         sumOrLog(r, 'steps', 'log/steps', '%.4g'),
+                         sumOrLog(r, 'simulatedTime', 'log/time', '%.3g'),
+                         sumOrLog(r, 'wallTime', 'log/executionTime',
+                                  '%.1f'),
                          fmt(r.get('processWallTime'), '%.1f'),
                          fmt(r.get('cpuTime'), '%.1f'),
                          fmt(r.get('maxRSS'), '%.0f')]
@@ -829,6 +842,10 @@ class Report:
                   'whole process (reading, packing, analysis, writing); '
                   'CPU is user + system time of the process.')
         self.parts.append(mdTable(headers, body))
+        if stopped:
+            self.text('\\* a run that did not finish: simulated time, '
+                      'steps and packing time of its last progress line '
+                      '(how far it got).')
 
     def write(self):
         b = self.bench
