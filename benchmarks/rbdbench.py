@@ -542,6 +542,11 @@ def runProcess(cmd, cwd, env, log, timeout=None, watch=None):
     return result
 
 
+#: Cache columns kept as text: a commit or hash of digits and one 'e'
+#: ('073842e235') would otherwise read as a number
+_TEXT_COLUMNS = {'case', 'hash', 'status', 'commit', 'date', 'dir'}
+
+
 class Benchmark:
     """Runs a benchmark's cases with a CSV cache and writes its report."""
 
@@ -570,7 +575,8 @@ class Benchmark:
             with open(self.csvPath, newline='') as f:
                 for row in csv.DictReader(f):
                     rows[(row['case'], row['hash'])] = {
-                        k: parseScalar(v) if v != '' else None
+                        k: (None if v == '' else v if k in _TEXT_COLUMNS
+                            else parseScalar(v))
                         for k, v in row.items()}
         return rows
 
