@@ -543,6 +543,11 @@ def runProcess(cmd, cwd, env, log, timeout=None, watch=None):
     return result
 
 
+#: Cache columns kept as text: a commit or hash of digits and one 'e'
+#: ('073842e235') would otherwise read as a number
+_TEXT_COLUMNS = {'case', 'hash', 'status', 'commit', 'date', 'dir'}
+
+
 class Benchmark:
     """Runs a benchmark's cases with a CSV cache and writes its report."""
 
@@ -571,7 +576,8 @@ class Benchmark:
             with open(self.csvPath, newline='') as f:
                 for row in csv.DictReader(f):
                     rows[(row['case'], row['hash'])] = {
-                        k: parseScalar(v) if v != '' else None
+                        k: (None if v == '' else v if k in _TEXT_COLUMNS
+                            else parseScalar(v))
                         for k, v in row.items()}
         return rows
 
@@ -814,11 +820,24 @@ class Report:
                     'CPU [s]', 'peak memory [MiB]']
                    + [h for h, _ in extra] + ['commit'])
         body = []
+        stopped = False
+
+        def sumOrLog(r, key, logKey, spec):
+            # a run that did not finish has no summary: its last progress
+            # line says how far it got (marked *)
+            nonlocal stopped
+            if r.get(key) is not None or r.get(logKey) is None:
+                return fmt(r.get(key), spec)
+            stopped = True
+            return fmt(r.get(logKey), spec) + ' *'
+
         for r in rows:
             body.append([r['case'], r.get('status'),
-                         fmt(r.get('pellets')), fmt(r.get('steps')),
-                         fmt(r.get('simulatedTime'), '%.3g'),
-                         fmt(r.get('wallTime'), '%.1f'),
+                         fmt(r.get('pellets')),
+                         sumOrLog(r, 'steps', 'log/steps', '%.4g'),
+                         sumOrLog(r, 'simulatedTime', 'log/time', '%.3g'),
+                         sumOrLog(r, 'wallTime', 'log/executionTime',
+                                  '%.1f'),
                          fmt(r.get('processWallTime'), '%.1f'),
                          fmt(r.get('cpuTime'), '%.1f'),
                          fmt(r.get('maxRSS'), '%.0f')]
@@ -830,6 +849,10 @@ class Report:
                   'whole process (reading, packing, analysis, writing); '
                   'CPU is user + system time of the process.')
         self.parts.append(mdTable(headers, body))
+        if stopped:
+            self.text('\\* a run that did not finish: simulated time, '
+                      'steps and packing time of its last progress line '
+                      '(how far it got).')
 
     def write(self):
         b = self.bench
