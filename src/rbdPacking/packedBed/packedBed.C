@@ -454,11 +454,10 @@ void Foam::rbd::packedBed::run()
     }
 
     wallTime_ = timer.elapsedTime();
-    finalOverlap_ = w.currentMaxOverlap();
 
-    // The final contact list, sleeping pellets included, for the contact
-    // treatments of the CFD case
-    w.allContacts();
+    // Also leaves the final contact list, sleeping pellets included, in
+    // w.contacts() for the contact treatments of the CFD case
+    finalOverlap_ = w.currentMaxOverlap();
 
     Info<< nl;
     if (settled_)

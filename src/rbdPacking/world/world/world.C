@@ -769,11 +769,12 @@ Foam::scalar Foam::rbd::world::potentialEnergy() const
 
 Foam::scalar Foam::rbd::world::currentMaxOverlap()
 {
-    const statistics saved = stats_;
-    stats_.maxOverlap = 0;
-    findContacts(true);
-    const scalar current = stats_.maxOverlap;
-    stats_.maxOverlap = max(saved.maxOverlap, current);
+    scalar current = 0;
+    for (const contact& c : allContacts())
+    {
+        current = max(current, -c.gap);
+    }
+    stats_.maxOverlap = max(stats_.maxOverlap, current);
     return current;
 }
 
