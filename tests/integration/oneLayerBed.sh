@@ -7,10 +7,7 @@
 #------------------------------------------------------------------------------
 set -u
 here="$(cd "$(dirname "$0")" && pwd)"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
+. "$here/lib/checks.sh"
 
 cp -r "$here/cases/smallSpheres" "$tmp/a"
 foamDictionary -entry container/diameter -set 0.08 "$tmp/a/system/packingDict" >/dev/null

@@ -212,13 +212,17 @@ TEST(stlIO, openFoamReadsBinaryBed)
     }
 
     const rbd::triMesh body = rbd::pelletMeshes::ring(0.01, 0.006, 0.01, 500);
-    const fileName f = rbdTest::tmpFile("bed-of.stl");
+    // In a directory of its own: surfaceCheck writes its findings (.vtp,
+    // .obj) next to the surface
+    const fileName dir = rbdTest::tmpFile("surfaceCheck");
+    ASSERT_TRUE(Foam::mkDir(dir));
+    const fileName f = dir/"bed-of.stl";
     {
         rbd::stlWriter w(f, true);
         w.write(body, tensor::I, vector::zero);
         w.write(body, quaternion(vector(0, 1, 0), 1.0).R(), vector(0.02, 0, 0));
     }
-    const fileName log = rbdTest::tmpFile("surfaceCheck.log");
+    const fileName log = dir/"surfaceCheck.log";
     const std::string cmd =
         "surfaceCheck " + f + " > " + log + " 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << contents(log);
@@ -236,6 +240,5 @@ TEST(stlIO, openFoamReadsBinaryBed)
     EXPECT_NE(out.find("Surface is closed"), std::string::npos) << out;
     EXPECT_NE(out.find("Number of unconnected parts : 2"), std::string::npos)
         << out;
-    Foam::rm(f);
-    Foam::rm(log);
+    Foam::rmDir(dir);
 }

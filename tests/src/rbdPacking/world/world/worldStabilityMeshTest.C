@@ -158,20 +158,13 @@ namespace
             const UList<rigidBody>& bs = w.bodies();
             for (const rigidBody& b : bs)
             {
-                const quaternion& q = b.q();
-                const bool finite =
-                    std::isfinite(mag(b.x())) && std::isfinite(mag(b.v()))
-                 && std::isfinite(mag(b.omega()))
-                 && std::isfinite(q.w()) && std::isfinite(mag(q.v()));
-                if (!finite)
+                if (!finiteState(b))
                 {
                     ++badStates;
                     continue;
                 }
-                maxQuaternionError = max
-                (
-                    maxQuaternionError, mag(mag(q) - 1)
-                );
+                maxQuaternionError =
+                    max(maxQuaternionError, quaternionNormError(b));
                 const tmp<pointField> tp =
                     s.shape->mesh().transformedPoints(b.R(), b.x());
                 for (const point& p : tp())

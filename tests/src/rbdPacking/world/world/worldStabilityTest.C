@@ -48,20 +48,13 @@ namespace
         {
             for (const rigidBody& b : w.bodies())
             {
-                const quaternion& q = b.q();
-                const bool finite =
-                    std::isfinite(mag(b.x())) && std::isfinite(mag(b.v()))
-                 && std::isfinite(mag(b.omega()))
-                 && std::isfinite(q.w()) && std::isfinite(mag(q.v()));
-                if (!finite)
+                if (!finiteState(b))
                 {
                     ++badStates;
                     continue;
                 }
-                maxQuaternionError = max
-                (
-                    maxQuaternionError, mag(mag(q) - 1)
-                );
+                maxQuaternionError =
+                    max(maxQuaternionError, quaternionNormError(b));
                 const scalar r = Foam::sqrt(sqr(b.x().x()) + sqr(b.x().y()));
                 maxEscape = max(maxEscape, r + a - container.radius());
                 maxEscape = max(maxEscape, a - b.x().z());
