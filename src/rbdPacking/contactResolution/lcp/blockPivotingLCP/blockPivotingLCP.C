@@ -347,29 +347,16 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         }
     }
 
-    if (!result.converged && getenv("RBD_LCPDUMP"))
+    if (!result.converged && n <= fallbackSize_)
     {
-        static label dumps = 0;
-        if (dumps < 5)
+        const label pivoted = result.iterations;
+        result = fallback_->solve(Eigen::MatrixXd(A), b, f);
+        result.iterations += pivoted;
+        if (!result.converged && debug)
         {
-            std::ofstream os("/tmp/lcpdump_" + std::to_string(dumps++) + ".txt");
-            os.precision(17);
-            os << n << " " << A.nonZeros() << " " << eps << "\n";
-            for (label j = 0; j < n; ++j)
-                for (sparseMatrix::InnerIterator it(A, j); it; ++it)
-                    os << it.row() << " " << j << " " << it.value() << "\n";
-            for (label j = 0; j < n; ++j) os << b(j) << " " << (label(guess.size()) == n ? label(guess[j]) : -1) << "\n";
+            writeProblem(A, b, guess, eps);
         }
-    }
-    if (!result.converged)
-    {
-        if (n <= fallbackSize_)
-        {
-            const label pivoted = result.iterations;
-            result = fallback_->solve(Eigen::MatrixXd(A), b, f);
-            result.iterations += pivoted;
-            return result;
-        }
+        return result;
     }
 
     f = z.cwiseMax(0.0);
@@ -378,7 +365,49 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         f = fs;
     }
     result.maxViolation = violation(A, b, f);
+    if (!result.converged && debug)
+    {
+        writeProblem(A, b, guess, eps);
+    }
     return result;
+}
+
+
+void Foam::rbd::blockPivotingLCP::writeProblem
+(
+    const Eigen::SparseMatrix<double>& A,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    const scalar eps
+)
+{
+    // The first maxWritten problems of the run: a bed that fails one
+    // usually fails many alike
+    const label maxWritten = 10;
+    static label written = 0;
+    if (written >= maxWritten)
+    {
+        return;
+    }
+    const label n = b.size();
+    const fileName name("blockPivotingLCP" + Foam::name(written++) + ".lcp");
+    std::ofstream os(name);
+    os.precision(17);
+    os  << n << ' ' << A.nonZeros() << ' ' << eps << '\n';
+    for (label j = 0; j < n; ++j)
+    {
+        for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+        {
+            os  << it.row() << ' ' << j << ' ' << it.value() << '\n';
+        }
+    }
+    for (label j = 0; j < n; ++j)
+    {
+        os  << b(j) << ' '
+            << (label(guess.size()) == n ? label(guess[j]) : -1) << '\n';
+    }
+    Info<< "blockPivotingLCP: unsolved problem of " << n
+        << " contacts written to " << name << endl;
 }
 
 
