@@ -37,12 +37,15 @@ Foam::rbd::blockPivotingLCP::blockPivotingLCP(const dictionary& coeffs)
         getInRangeOrDefault(coeffs, "regularisation", 1e-10, 1e-16, 1e-3, "-")
     ),
     maxIterations_(getLabelOrDefault(coeffs, "maxIterations", 200, 1)),
+    interiorPointIterations_
+    (
+        getLabelOrDefault(coeffs, "interiorPointIterations", 50, 0)
+    ),
     fallbackIterations_
     (
         getLabelOrDefault(coeffs, "fallbackIterations", 10, 1)
     ),
     fallbackSize_(getLabelOrDefault(coeffs, "fallbackSize", 400, 0)),
-    smoothingSweeps_(getLabelOrDefault(coeffs, "smoothingSweeps", 10, 1)),
     fallback_(new baraffLCP(dictionary()))
 {
     checkKnownEntries
@@ -50,7 +53,7 @@ Foam::rbd::blockPivotingLCP::blockPivotingLCP(const dictionary& coeffs)
         coeffs,
         {
             "tolerance", "regularisation", "maxIterations",
-            "fallbackIterations", "fallbackSize", "smoothingSweeps"
+            "interiorPointIterations", "fallbackIterations", "fallbackSize"
         }
     );
 }
@@ -153,22 +156,10 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     Eigen::VectorXd z(n), w(n);
 
     // Judice-Pires: block exchanges while the number of infeasible
-    // contacts falls (or within three chances), else Gauss-Seidel
-    // smoothing picks the next active set
+    // contacts falls (or within three chances); once they cycle, the
+    // interior-point method takes over
     label fewest = n + 1;
     label chances = 3;
-
-    // Gauss-Seidel smoothing, once block exchanges cycle; its candidates
-    // are accepted within ten times the tolerance: the block candidates of
-    // a degenerate island cycle at round-off just above it (see the
-    // header)
-    bool smoothing = false;
-    const scalar cyclingTolerance = 10*tolerance_;
-    Eigen::VectorXd fs;
-    auto objective = [&](const Eigen::VectorXd& x)
-    {
-        return 0.5*x.dot(A*x) + 0.5*eps*x.squaredNorm() + b.dot(x);
-    };
 
     const label iterations =
         n <= fallbackSize_
@@ -212,7 +203,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             if (ldlt.info() != Eigen::Success)
             {
                 // Not expected (A_FF + eps I is positive definite): leave
-                // it to the fallback, or to f = 0
+                // it to the interior point and the fallback
                 break;
             }
             Eigen::VectorXd rhs(m);
@@ -264,112 +255,217 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             break;
         }
 
-        if (!smoothing)
+        const label nInfeasible = infeasible.size();
+        if (nInfeasible < fewest)
         {
-            const label nInfeasible = infeasible.size();
-            if (nInfeasible < fewest)
-            {
-                fewest = nInfeasible;
-                chances = 3;
-            }
-            else if (chances > 0)
-            {
-                --chances;
-            }
-            else
-            {
-                smoothing = true;
-                fs = z.cwiseMax(0.0);
-            }
-            if (!smoothing)
-            {
-                for (const label i : infeasible)
-                {
-                    inF[i] = !inF[i];
-                }
-                continue;
-            }
+            fewest = nInfeasible;
+            chances = 3;
         }
-
-        // Block exchanges cycle: from here on, projected Gauss-Seidel
-        // sweeps on the regularised problem pick the active set of the
-        // next subspace solve, started from the better of the last
-        // sweep's iterate and the projected subspace solution; both steps
-        // lower the convex objective 1/2 f.(A + eps I) f + b.f, so this
-        // converges (Silcowitz, Niebe and Erleben's PGS subspace
-        // minimisation)
+        else if (chances > 0)
         {
-            const Eigen::VectorXd zp(z.cwiseMax(0.0));
-            if (violation(A, b, zp) <= cyclingTolerance)
-            {
-                // The projected subspace solution solves it
-                z = zp;
-                result.converged = true;
-                break;
-            }
-            if (objective(zp) < objective(fs))
-            {
-                fs = zp;
-            }
+            --chances;
         }
-        Eigen::VectorXd ws(A*fs + b + eps*fs);
-        for (label sweep = 0; sweep < smoothingSweeps_; ++sweep)
+        else
         {
-            for (label j = 0; j < n; ++j)
-            {
-                const scalar fj = max(fs(j) - ws(j)/(diag(j) + eps), 0.0);
-                const scalar df = fj - fs(j);
-                if (df != 0)
-                {
-                    fs(j) = fj;
-                    for (sparseMatrix::InnerIterator it(A, j); it; ++it)
-                    {
-                        ws(it.row()) += it.value()*df;
-                    }
-                    ws(j) += eps*df;
-                }
-            }
-        }
-        // The smoothed iterate may itself solve the problem (the block
-        // exchanges of a degenerate problem, singular A with forces and
-        // gaps both zero at some contacts, can cycle between candidates
-        // that miss the tolerance by round-off while the iterate meets it)
-        if (violation(A, b, fs) <= cyclingTolerance)
-        {
-            z = fs;
-            result.converged = true;
-            result.iterations = iter + 1;
+            // The block exchanges cycle
             break;
         }
-        for (label i = 0; i < n; ++i)
+        for (const label i : infeasible)
         {
-            inF[i] = fs(i) > 0;
+            inF[i] = !inF[i];
         }
-    }
-
-    if (!result.converged && n <= fallbackSize_)
-    {
-        const label pivoted = result.iterations;
-        result = fallback_->solve(Eigen::MatrixXd(A), b, f);
-        result.iterations += pivoted;
-        if (!result.converged && debug)
-        {
-            writeProblem(A, b, guess, eps);
-        }
-        return result;
     }
 
     f = z.cwiseMax(0.0);
-    if (!result.converged && smoothing && objective(fs) < objective(f))
+
+    // A small problem goes to baraff: exact, and a vertex of the solution
+    // set (a basis of contacts), which is the active set the next step's
+    // pivoting starts from; the interior point returns the centre of a
+    // degenerate solution set, from which the pivoting cycles again
+    if (!result.converged && n <= fallbackSize_)
     {
-        f = fs;
+        Eigen::VectorXd fb;
+        const lcpResult rb = fallback_->solve(Eigen::MatrixXd(A), b, fb);
+        result.iterations += rb.iterations;
+        if (rb.converged || rb.maxViolation < violation(A, b, f))
+        {
+            f = fb;
+            result.converged = rb.converged;
+        }
     }
+
+    // A large problem (or one baraff did not solve): the interior point
+    if (!result.converged && interiorPointIterations_ > 0)
+    {
+        Eigen::VectorXd fi;
+        result.iterations += interiorPoint(A, b, diag, eps, fi);
+        const scalar vi = violation(A, b, fi);
+        if (vi <= tolerance_ || vi < violation(A, b, f))
+        {
+            f = fi;
+            result.converged = vi <= tolerance_;
+        }
+    }
+
     result.maxViolation = violation(A, b, f);
     if (!result.converged && debug)
     {
         writeProblem(A, b, guess, eps);
     }
     return result;
+}
+
+
+Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
+(
+    const Eigen::SparseMatrix<double>& A,
+    const Eigen::VectorXd& b,
+    const Eigen::VectorXd& diag,
+    const scalar eps,
+    Eigen::VectorXd& f
+) const
+{
+    typedef Eigen::SparseMatrix<double> sparseMatrix;
+    const label n = b.size();
+    const scalar bRef = b.cwiseAbs().maxCoeff();
+
+    // Strictly positive start on the problem's scales: forces that would
+    // cancel the largest b on the stiffest contact, gaps of that b
+    f = Eigen::VectorXd::Constant(n, bRef/diag.maxCoeff());
+    Eigen::VectorXd w
+    (
+        (A*f + b).cwiseMax(0.0) + Eigen::VectorXd::Constant(n, bRef)
+    );
+
+    // M = A + W/F + eps I keeps the pattern of A (whose diagonal is
+    // stored): ordered and analysed once, factorised per step
+    sparseMatrix M(A);
+    for (label i = 0; i < n; ++i)
+    {
+        M.coeffRef(i, i) += eps;
+    }
+    M.makeCompressed();
+    std::vector<double*> diagonal(n);
+    for (label j = 0; j < n; ++j)
+    {
+        for (sparseMatrix::InnerIterator it(M, j); it; ++it)
+        {
+            if (it.row() == j)
+            {
+                diagonal[j] = &it.valueRef();
+            }
+        }
+    }
+    const Eigen::VectorXd M0(M.diagonal());
+    Eigen::SimplicialLDLT<sparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>
+        ldlt;
+    ldlt.analyzePattern(M);
+
+    // The largest step in (0, 1] along (df, dw) that keeps f, w > 0
+    auto maxStep = [&](const Eigen::VectorXd& df, const Eigen::VectorXd& dw)
+    {
+        scalar alpha = 1;
+        for (label i = 0; i < n; ++i)
+        {
+            if (df(i) < 0)
+            {
+                alpha = min(alpha, -f(i)/df(i));
+            }
+            if (dw(i) < 0)
+            {
+                alpha = min(alpha, -w(i)/dw(i));
+            }
+        }
+        return alpha;
+    };
+
+    // Stalled: no halving of the violation in this many steps (round-off
+    // floor of a degenerate problem, or an infeasible one)
+    const label stallSteps = 5;
+    scalar best = GREAT;
+    label bestStep = 0;
+
+    label step = 0;
+    for (; step < interiorPointIterations_; ++step)
+    {
+        // Residual of w = A f + b; done when f itself solves the LCP
+        const Eigen::VectorXd r(A*f + b - w);
+        const scalar v = violation(A, b, f);
+        if (v <= tolerance_)
+        {
+            break;
+        }
+        if (v < 0.5*best)
+        {
+            best = v;
+            bestStep = step;
+        }
+        else if (step - bestStep >= stallSteps)
+        {
+            break;
+        }
+        const scalar mu = f.dot(w)/n;
+
+        for (label i = 0; i < n; ++i)
+        {
+            *diagonal[i] = M0(i) + w(i)/f(i);
+        }
+        ldlt.factorize(M);
+        if (ldlt.info() != Eigen::Success)
+        {
+            break;
+        }
+
+        // Predictor (affine-scaling) direction: the Newton step for
+        // A df - dw = -r, W df + F dw = -F W e
+        const Eigen::VectorXd dfAff(ldlt.solve(-(w + r)));
+        const Eigen::VectorXd dwAff(A*dfAff + r);
+        const scalar alphaAff = maxStep(dfAff, dwAff);
+        const scalar muAff =
+            (f + alphaAff*dfAff).dot(w + alphaAff*dwAff)/n;
+        const scalar sigma = pow3(muAff/mu);
+
+        // Corrector: centring sigma mu and the second-order term
+        const Eigen::VectorXd df
+        (
+            ldlt.solve
+            (
+                -r - w
+              + (
+                    Eigen::VectorXd::Constant(n, sigma*mu)
+                  - dfAff.cwiseProduct(dwAff)
+                ).cwiseQuotient(f)
+            )
+        );
+        const Eigen::VectorXd dw(A*df + r);
+        if (!df.allFinite() || !dw.allFinite())
+        {
+            break;
+        }
+        const scalar alpha = min(scalar(1), 0.99*maxStep(df, dw));
+        f += alpha*df;
+        w += alpha*dw;
+    }
+
+    // The iterate is strictly positive: forces below the tolerance at
+    // contacts whose gap dominates are set to zero (if the whole still
+    // meets the tolerance), so the active set passed on to the next step
+    // is the contacts that carry the load
+    const Eigen::VectorXd wf(A*f + b);
+    const scalar fRef = f.cwiseAbs().maxCoeff();
+    Eigen::VectorXd pure(f);
+    for (label i = 0; i < n; ++i)
+    {
+        if (f(i) <= tolerance_*fRef && f(i)*bRef <= wf(i)*fRef)
+        {
+            pure(i) = 0;
+        }
+    }
+    if (violation(A, b, pure) <= max(tolerance_, violation(A, b, f)))
+    {
+        f = pure;
+    }
+    return step;
 }
 
 
@@ -416,9 +512,9 @@ void Foam::rbd::blockPivotingLCP::writeCoeffs(Ostream& os) const
     os.writeEntry("tolerance", tolerance_);
     os.writeEntry("regularisation", regularisation_);
     os.writeEntry("maxIterations", maxIterations_);
+    os.writeEntry("interiorPointIterations", interiorPointIterations_);
     os.writeEntry("fallbackIterations", fallbackIterations_);
     os.writeEntry("fallbackSize", fallbackSize_);
-    os.writeEntry("smoothingSweeps", smoothingSweeps_);
 }
 
 
