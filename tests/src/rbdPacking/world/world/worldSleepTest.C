@@ -117,6 +117,45 @@ TEST(sleep, wakingSpreadsToThePelletsAbove)
 }
 
 
+TEST(sleep, aSleeperWokenInTheCollisionsKeepsItsSupports)
+{
+    // Two sleepers at the bottom of a column, an awake sphere resting on
+    // them, and a fourth touching it at 5 cm/s (a slow collision: the step
+    // stays long): the impulse passes down
+    // to the upper sleeper inside the collision stage, which wakes it. Its
+    // contacts with the floor sleeper were not listed while it slept; the
+    // step must list them again, or it falls into that sleeper for a whole
+    // step (~1e-4 m at deltaT 0.005 s)
+    sphereScene s(1.05*d, d, 0.3, 0.5, 0.3, 0.5, sleepOn);
+    for (label i = 0; i < 3; ++i)
+    {
+        s().addBody(point(0, 0, 0.5*d + i*d), quaternion(1));
+    }
+    while (s().time() < 3 && s().nSleeping() < 3)
+    {
+        s().advance(0.005);
+    }
+    ASSERT_EQ(s().nSleeping(), 3);
+
+    s().setVelocity(2, Zero, Zero);
+    ASSERT_TRUE(s().sleeping()[1]);
+    ASSERT_FALSE(s().sleeping()[2]);
+    const scalar overlapBefore = s().stats().maxOverlap;
+
+    const label top =
+        s().addBody(s().bodies()[2].x() + vector(0, 0, d), quaternion(1));
+    s().setVelocity(top, vector(0, 0, -0.05), Zero);
+    bool wokeMiddle = false;
+    while (s().time() < 3.5)
+    {
+        s().advance(0.005);
+        wokeMiddle = wokeMiddle || !s().sleeping()[1];
+    }
+    EXPECT_TRUE(wokeMiddle);
+    EXPECT_LT(s().stats().maxOverlap, max(overlapBefore, 1e-3*d));
+}
+
+
 TEST(sleep, aPelletSleepsWhenItsMeanSpeedIsBelowTheThreshold)
 {
     // Frictionless spheres slide on the floor at constant speed: at half
