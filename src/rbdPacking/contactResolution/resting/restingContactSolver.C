@@ -313,11 +313,14 @@ Foam::rbd::restingContactSolver::solve
             phi(a) = max(phi(a), scalar(0));
         }
         // A solve that missed its tolerance but whose candidate violates
-        // the LCP by less than this (lcpSolver::violation, relative to the
-        // problem's scales) is used as it is: a degenerate island's best
-        // candidates stop at round-off above the tolerance
-        const scalar usableViolation = 1e-6;
-        if (!lr.converged && !(lr.maxViolation <= usableViolation))
+        // the LCP by less than lcpSolver::usableViolation is used as it
+        // is: a degenerate island's best candidates stop a little above
+        // the tolerance
+        if
+        (
+            !lr.converged
+         && !(lr.maxViolation <= lcpSolver::usableViolation)
+        )
         {
             // No solution (an infeasible island: bodies jammed between
             // contacts that accelerate into each other, or a solver that
