@@ -401,9 +401,10 @@ Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
         return alpha;
     };
 
-    // Stalled: no halving of the violation in this many steps (round-off
-    // floor of a degenerate problem, or an infeasible one)
-    const label stallSteps = 5;
+    // Stalled: no halving of the violation in this many steps (an
+    // infeasible problem; on the way to a solution the violation can stay
+    // put for five steps, as on a 262-contact island of the tutorial)
+    const label stallSteps = 10;
     scalar best = GREAT;
     label bestStep = 0;
 
