@@ -326,7 +326,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         }
     }
 
-    result.maxViolation = violation(A, b, f);
+    result.maxViolation = v;
     if (!result.converged && debug)
     {
         writeProblem(A, b, guess, eps);
