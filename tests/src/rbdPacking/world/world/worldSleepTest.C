@@ -15,6 +15,21 @@ namespace
     const std::string sleepOn =
         "sleepVelocity 0.001; sleepTime 0.2; deltaT 0.005;";
 
+    //- Three spheres stacked on the floor of s (a tube barely wider than
+    //  one), run until all three sleep; false if they do not within 3 s
+    bool sleepingColumn(sphereScene& s)
+    {
+        for (label i = 0; i < 3; ++i)
+        {
+            s().addBody(point(0, 0, 0.5*d + i*d), quaternion(1));
+        }
+        while (s().time() < 3 && s().nSleeping() < 3)
+        {
+            s().advance(0.005);
+        }
+        return s().nSleeping() == 3;
+    }
+
     //- Whether a sleeping pellet rests on an awake one: a contact of the
     //  current list whose normal, from the other pellet to the sleeper,
     //  points up
@@ -98,15 +113,7 @@ TEST(sleep, growsFromTheBottomUpInAStack)
 TEST(sleep, wakingSpreadsToThePelletsAbove)
 {
     sphereScene s(1.05*d, d, 0.3, 0.5, 0.3, 0.5, sleepOn);
-    for (label i = 0; i < 3; ++i)
-    {
-        s().addBody(point(0, 0, 0.5*d + i*d), quaternion(1));
-    }
-    while (s().time() < 3 && s().nSleeping() < 3)
-    {
-        s().advance(0.005);
-    }
-    ASSERT_EQ(s().nSleeping(), 3);
+    ASSERT_TRUE(sleepingColumn(s));
 
     // The middle one is woken: the top one, which rests on it, wakes too;
     // the bottom one, below it, sleeps on
@@ -121,21 +128,12 @@ TEST(sleep, aSleeperWokenInTheCollisionsKeepsItsSupports)
 {
     // Two sleepers at the bottom of a column, an awake sphere resting on
     // them, and a fourth touching it at 5 cm/s (a slow collision: the step
-    // stays long): the impulse passes down
-    // to the upper sleeper inside the collision stage, which wakes it. Its
-    // contacts with the floor sleeper were not listed while it slept; the
-    // step must list them again, or it falls into that sleeper for a whole
-    // step (~1e-4 m at deltaT 0.005 s)
+    // stays long): the impulse passes down to the upper sleeper inside the
+    // collision stage, which wakes it. Its contacts with the floor sleeper
+    // were not listed while it slept; the step must list them again, or it
+    // falls into that sleeper for a whole step (~1e-4 m at deltaT 0.005 s)
     sphereScene s(1.05*d, d, 0.3, 0.5, 0.3, 0.5, sleepOn);
-    for (label i = 0; i < 3; ++i)
-    {
-        s().addBody(point(0, 0, 0.5*d + i*d), quaternion(1));
-    }
-    while (s().time() < 3 && s().nSleeping() < 3)
-    {
-        s().advance(0.005);
-    }
-    ASSERT_EQ(s().nSleeping(), 3);
+    ASSERT_TRUE(sleepingColumn(s));
 
     s().setVelocity(2, Zero, Zero);
     ASSERT_TRUE(s().sleeping()[1]);
