@@ -408,12 +408,20 @@ Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
     scalar best = GREAT;
     label bestStep = 0;
 
+    // max |A_ij|, the scale violation() needs, once for the solve
+    scalar aMax = 0;
+    for (Eigen::Index k = 0; k < A.nonZeros(); ++k)
+    {
+        aMax = max(aMax, mag(A.valuePtr()[k]));
+    }
+
     label step = 0;
     for (; step < interiorPointIterations_; ++step)
     {
         // Residual of w = A f + b; done when f itself solves the LCP
-        const Eigen::VectorXd r(A*f + b - w);
-        const scalar v = violation(A, b, f);
+        const Eigen::VectorXd wf(A*f + b);
+        const Eigen::VectorXd r(wf - w);
+        const scalar v = violation(wf, b, f, aMax);
         if (v <= tolerance_)
         {
             break;
@@ -484,7 +492,11 @@ Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
             pure(i) = 0;
         }
     }
-    if (violation(A, b, pure) <= max(tolerance_, violation(A, b, f)))
+    if
+    (
+        violation(Eigen::VectorXd(A*pure + b), b, pure, aMax)
+     <= max(tolerance_, violation(wf, b, f, aMax))
+    )
     {
         f = pure;
     }
