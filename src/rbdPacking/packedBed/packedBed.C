@@ -475,7 +475,8 @@ void Foam::rbd::packedBed::run()
     Info<< "Simulated " << w.time() << " s in " << s.steps << " steps ("
         << "smallest " << s.minStep << " s), " << s.collisions
         << " collisions (" << s.impulses << " impulses in "
-        << s.collisionSweeps << " sweeps), " << s.restingSolves << " resting-contact solves "
+        << s.collisionSweeps << " sweeps), " << s.restingSolves
+        << " resting-contact solves "
         << "(" << s.lcpIterations << " LCP iterations, largest island "
         << s.largestIsland << " contacts, "
         << s.lcpFailures << " not converged), " << s.projections
