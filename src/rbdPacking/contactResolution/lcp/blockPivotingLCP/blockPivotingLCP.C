@@ -155,9 +155,9 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     // One fill-reducing (AMD) ordering of A for the whole solve: every
     // A_FF is assembled in the order it induces on F (a principal
     // submatrix keeps the elimination order's sparsity benefits), and
-    // factorised without ordering again
-    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
-    Eigen::AMDOrdering<int>()(A, order);
+    // factorised without ordering again. An island keeps its contacts for
+    // many steps: the ordering of a pattern seen before is reused.
+    const orderingCache::permutation& order = orderings_.order(A);
 
     std::vector<label> pos(n), members, infeasible;
     std::vector<Eigen::Triplet<double>> triplets;
