@@ -29,6 +29,27 @@ namespace
         // Stable form of (-b + sqrt(b^2 + 2 a c))/a
         return 2*c/(b + Foam::sqrt(Foam::sqr(b) + 2*a*c));
     }
+
+    //- Smallest t >= 0 with |p + v t| = rho for a point p inside the circle
+    //  of radius rho (p and v horizontal); GREAT if v = 0
+    Foam::scalar timeToLeaveCircle
+    (
+        const Foam::vector& p,
+        const Foam::vector& v,
+        const Foam::scalar rho
+    )
+    {
+        const Foam::scalar a = Foam::magSqr(v);
+        if (a <= 0)
+        {
+            return Foam::GREAT;
+        }
+        const Foam::scalar b = p & v;
+        const Foam::scalar c = Foam::min(Foam::magSqr(p) - Foam::sqr(rho), 0);
+        const Foam::scalar root = Foam::sqrt(Foam::sqr(b) - a*c);
+        // The positive root of a t^2 + 2 b t + c = 0, without cancellation
+        return b > 0 ? -c/(b + root) : (root - b)/a;
+    }
 }
 
 
@@ -422,6 +443,20 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         {
             const scalar u = (b.v() & rho)/rhoMag + spin;
             h = min(h, untilTouching(wallGap, u, g));
+
+            // The wall is concave: a pellet moving along it closes the gap
+            // faster than its radial speed says (the gap along a straight
+            // path is concave in time, closing with v_t^2/rho on top of
+            // the radial speed). The exact time for the centre's
+            // horizontal path to reach the radius of touching: without
+            // it, a sphere skimming the wall of a 31 mm tube at 1.1 m/s
+            // went 4e-5 m into it in one 1 ms step.
+            const vector vH(b.v().x(), b.v().y(), 0);
+            h = min
+            (
+                h,
+                timeToLeaveCircle(rho, vH, R - rb_ - 0.5*touch_)
+            );
         }
         else if (!centreGaps)
         {
