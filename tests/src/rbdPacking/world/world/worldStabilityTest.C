@@ -309,6 +309,55 @@ TEST(stability, aSphereSkimmingTheConcaveWallStaysInside)
 }
 
 
+TEST(stability, aThousandSpheres)
+{
+    // 1000 spheres in a 24 dp tube, released from a loose lattice just
+    // above the floor (three layers, the third partly filled): the scale
+    // case (broad phase, islands, sleep) at a size CI can afford. Spheres
+    // without rotation (an effect a scene may switch off), wall and pellet
+    // friction 0.6: they slide and stop. (With rotation the same bed
+    // settles at 4.4 s of simulated time after 2.5 min of CPU, rolling on
+    // the floor.) Settled means every pellet slow for 1 s, the kinetic
+    // energy below 1e-10 n m g dp: the usual 1e-7 n m g dp lets one of a
+    // thousand pellets slide at 4 mm/s, and the creep check caught it.
+    const scalar D = 24*d;
+    sphereScene s(D, d, 0.6, 0.6, 0.6, 0.6, sleepOn, false);
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    const scalar pitch = 1.1*d;
+    const scalar rMax = 0.5*D - a - 1e-4;
+    label n = 0;
+    for (label layer = 0; n < 1000; ++layer)
+    {
+        const scalar z = a + 0.2*d + layer*pitch;
+        const label m = label(rMax/pitch);
+        for (label ix = -m; ix <= m && n < 1000; ++ix)
+        {
+            for (label iy = -m; iy <= m && n < 1000; ++iy)
+            {
+                const scalar x = ix*pitch + 0.04*d*u(gen);
+                const scalar y = iy*pitch + 0.04*d*u(gen);
+                if (sqr(x) + sqr(y) <= sqr(rMax))
+                {
+                    s().addBody(point(x, y, z), quaternion(1));
+                    ++n;
+                }
+            }
+        }
+    }
+    ASSERT_EQ(s().bodies().size(), 1000);
+
+    monitor m{s(), s.container};
+    const scalar tSettled = m.settle(1e-10*energyScale(s()), 1.0, 5, 0.025);
+    m.expectHealthy("1000 spheres");
+    EXPECT_LT(tSettled, 5);
+    EXPECT_LT(s().stats().steps, 50000);
+    EXPECT_EQ(s().nSleeping(), 1000) << "a settled bed costs nothing";
+    EXPECT_LT(m.creep(0.5, 0.025), 1e-4*d);
+    m.expectHealthy("1000 spheres, settled");
+}
+
+
 TEST(stability, fastDropFromHighUp)
 {
     // 10 spheres thrown down at 20 m/s (a fall from 20 m): the step rule
