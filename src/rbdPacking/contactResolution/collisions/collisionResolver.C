@@ -13,11 +13,13 @@ Foam::rbd::collisionResolver::collisionResolver
     const scalar epsP,
     const scalar epsF,
     const label restitutionSweeps,
-    const label maxSweeps
+    const label maxSweeps,
+    const scalar approachTolerance
 )
 :
     epsP_(epsP),
     epsF_(epsF),
+    approachTolerance_(approachTolerance),
     restitutionSweeps_(restitutionSweeps),
     maxSweeps_(maxSweeps)
 {}
@@ -102,8 +104,9 @@ Foam::rbd::collisionResolver::resolve
     }
 
     // An approach slower than this is left to the resting-contact solve,
-    // which stops it within the step without interpenetration
-    const scalar vSlow = 1e-3*epsP_;
+    // which stops it within the step without interpenetration (and
+    // without dissipating it: the contact leaves as fast as it came)
+    const scalar vSlow = approachTolerance_*epsP_;
 
     // A contact found satisfied is skipped until an impulse changes one of
     // its bodies: version counts the impulses on each body, seen holds the

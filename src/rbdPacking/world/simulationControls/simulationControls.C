@@ -107,6 +107,8 @@ Foam::rbd::simulationControls::simulationControls
         1e-9, 0.01, "-")),
     restitutionSweeps(getLabelOrDefault(d, "restitutionSweeps", 10, 0)),
     maxSweeps(getLabelOrDefault(d, "maxSweeps", 200, 1)),
+    collisionTolerance(getInRangeOrDefault(d, "collisionTolerance", 1e-3,
+        1e-9, 1, "-")),
     sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0, "m/s")),
     sleepTime(getPositiveOrDefault(d, "sleepTime", 0.2, "s")),
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
@@ -123,7 +125,8 @@ Foam::rbd::simulationControls::simulationControls
     {
         "deltaT", "endTime", "gravity", "restingVelocity",
         "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
-        "restitutionSweeps", "maxSweeps", "sleepVelocity", "sleepTime",
+        "restitutionSweeps", "maxSweeps", "collisionTolerance",
+        "sleepVelocity", "sleepTime",
         "settleTime", "settleEnergy", "logInterval", "lcpSolver",
         "contactModel", "preset"
     };
@@ -161,6 +164,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("contactTolerance", contactTolerance);
     os.writeEntry("restitutionSweeps", restitutionSweeps);
     os.writeEntry("maxSweeps", maxSweeps);
+    os.writeEntry("collisionTolerance", collisionTolerance);
     os.writeEntry("sleepVelocity", sleepVelocity);
     os.writeEntry("sleepTime", sleepTime);
     os.writeEntry("settleTime", settleTime);

@@ -87,7 +87,8 @@ Foam::rbd::world::world
         controls.restingVelocity,
         controls.slipVelocity,
         controls.restitutionSweeps,
-        controls.maxSweeps
+        controls.maxSweeps,
+        controls.collisionTolerance
     ),
     resting_(controls.dict),
     contacts_(),

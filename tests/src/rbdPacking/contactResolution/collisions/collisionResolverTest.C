@@ -137,3 +137,49 @@ TEST(collisionResolver, frictionNeverReversesSlipOnTheFloor)
     EXPECT_GE(vp.x(), -1e-12);          // slip stopped, not reversed
     EXPECT_NEAR(vp.x(), 0, 1e-12);      // mu = 5 is enough to stop it
 }
+
+
+TEST(collisionResolver, approachesBelowTheToleranceAreLeftToTheRestingSolve)
+{
+    // A sphere touching the floor and approaching it slower than eps_p:
+    // a plastic impulse stops it if it approaches faster than
+    // collisionTolerance eps_p, otherwise it is left alone
+    const scalar epsP = 0.01;
+    for (const scalar tolerance : {1e-3, 1e-2})
+    {
+        for (const scalar factor : {0.5, 2.0})
+        {
+            const scalar vz = -factor*tolerance*epsP;
+            List<rigidBody> bs(1);
+            bs[0] = rigidBody(m, Ib, point(0, 0, a), quaternion(1), true);
+            bs[0].setState
+            (
+                point(0, 0, a), quaternion(1), m*vector(0, 0, vz), Zero
+            );
+            tube t(1, 1, 0.0, 0.9);
+            DynamicList<contact> cs;
+            sphereContacts::sphereTube(0, bs[0], a, t, 1e-3, cs);
+            ASSERT_EQ(cs.size(), 1);
+
+            const boolList fixed(1, false);
+            boolList woken(1, false);
+            const collisionResolver::result r =
+                collisionResolver(epsP, 1e-6, 10, 100, tolerance)
+               .resolve(bs, cs, 1e-9, fixed, woken);
+
+            const scalar vAfter = bs[0].v().z();
+            if (factor < 1)
+            {
+                EXPECT_EQ(r.impulses, 0) << tolerance;
+                EXPECT_EQ(vAfter, vz) << tolerance;
+            }
+            else
+            {
+                // Resting approach: plastic (e = 0), whatever the COR
+                EXPECT_EQ(r.impulses, 1) << tolerance;
+                EXPECT_EQ(r.collisions, 0) << tolerance;
+                EXPECT_NEAR(vAfter, 0, 1e-15) << tolerance;
+            }
+        }
+    }
+}
