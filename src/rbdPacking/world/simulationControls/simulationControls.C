@@ -108,7 +108,7 @@ Foam::rbd::simulationControls::simulationControls
     restitutionSweeps(getLabelOrDefault(d, "restitutionSweeps", 10, 0)),
     maxSweeps(getLabelOrDefault(d, "maxSweeps", 200, 1)),
     collisionTolerance(getInRangeOrDefault(d, "collisionTolerance", 1e-3,
-        1e-9, 1, "-")),
+        1e-9, 0.1, "-")),
     sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0, "m/s")),
     sleepTime(getPositiveOrDefault(d, "sleepTime", 0.2, "s")),
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),

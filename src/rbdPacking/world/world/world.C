@@ -440,9 +440,12 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         const vector rho(b.x().x(), b.x().y(), 0);
         const scalar rhoMag = mag(rho);
         const scalar wallGap = R - rhoMag - rb_;
-        if (wallGap > band_ && rhoMag > VSMALL)
+        const vector vH(b.v().x(), b.v().y(), 0);
+        if (wallGap > band_)
         {
-            const scalar u = (b.v() & rho)/rhoMag + spin;
+            // Radial speed (on the axis every horizontal direction is)
+            const scalar u =
+                (rhoMag > VSMALL ? (b.v() & rho)/rhoMag : mag(vH)) + spin;
             h = min(h, untilTouching(wallGap, u, g));
 
             // The wall is concave: a pellet moving along it closes the gap
@@ -452,7 +455,6 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
             // horizontal path to reach the radius of touching: without
             // it, a sphere skimming the wall of a 31 mm tube at 1.1 m/s
             // went 4e-5 m into it in one 1 ms step.
-            const vector vH(b.v().x(), b.v().y(), 0);
             h = min
             (
                 h,

@@ -12,7 +12,7 @@
 
 Foam::rbd::orderingCache::orderingCache(const label capacity)
 :
-    capacity_(capacity),
+    capacity_(Foam::max(capacity, label(1))),
     entries_(),
     hits_(0),
     lookups_(0)

@@ -171,7 +171,7 @@ TEST(collisionResolver, approachesBelowTheToleranceAreLeftToTheRestingSolve)
             if (factor < 1)
             {
                 EXPECT_EQ(r.impulses, 0) << tolerance;
-                EXPECT_EQ(vAfter, vz) << tolerance;
+                EXPECT_DOUBLE_EQ(vAfter, vz) << tolerance;
             }
             else
             {
