@@ -416,7 +416,21 @@ void Foam::rbd::packedBed::run()
 
         // Outer interval: termination test and progress
         const scalar KE = w.kineticEnergy();
-        if (released == number_)
+        if
+        (
+            released < number_ && !warnedStall
+         && w.time() - lastRelease > 2
+        )
+        {
+            WarningInFunction
+                << "No pellet could be released for 2 s: the bed has "
+                << "reached the release height with " << released << " of "
+                << number_ << " pellets" << endl;
+            warnedStall = true;
+        }
+        // The kinetic-energy test once every pellet is in, or once no more
+        // can be released (the bed settles with fewer pellets)
+        if (released == number_ || warnedStall)
         {
             quietTime = (KE <= ctrl.settleEnergy*Eref) ? quietTime + ctrl.deltaT
                                                         : 0;
@@ -424,14 +438,6 @@ void Foam::rbd::packedBed::run()
             {
                 settled_ = true;
             }
-        }
-        else if (!warnedStall && w.time() - lastRelease > 2)
-        {
-            WarningInFunction
-                << "No pellet could be released for 2 s: the bed has "
-                << "reached the release height with " << released << " of "
-                << number_ << " pellets" << endl;
-            warnedStall = true;
         }
 
         if (w.time() >= nextLog - 1e-12 || settled_)
@@ -447,7 +453,7 @@ void Foam::rbd::packedBed::run()
             nextLog += ctrl.logInterval;
         }
 
-        if (settled_ || (warnedStall && KE <= ctrl.settleEnergy*Eref))
+        if (settled_)
         {
             break;
         }
@@ -463,7 +469,13 @@ void Foam::rbd::packedBed::run()
     if (settled_)
     {
         Info<< "Settled: kinetic energy below " << ctrl.settleEnergy
-            << " n m g dp for " << ctrl.settleTime << " s" << nl;
+            << " n m g dp for " << ctrl.settleTime << " s";
+        if (released < number_)
+        {
+            Info<< ", with " << released << " of " << number_ << " pellets "
+                << "(the bed reached the release height)";
+        }
+        Info<< nl;
     }
     else
     {
@@ -517,6 +529,9 @@ void Foam::rbd::packedBed::write() const
 
     dictionary summary;
     summary.add("pellets", w.bodies().size());
+    // Asked for: more than 'pellets' when the bed reached the release
+    // height first
+    summary.add("requestedPellets", number_);
     summary.add("shape", shape.type());
     summary.add("tubeDiameter", tube_.diameter());
     summary.add("pelletDiameter", shape.diameter());
