@@ -441,11 +441,9 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         const scalar rhoMag = mag(rho);
         const scalar wallGap = R - rhoMag - rb_;
         const vector vH(b.v().x(), b.v().y(), 0);
-        if (wallGap > band_)
+        if (wallGap > band_ && rhoMag > VSMALL)
         {
-            // Radial speed (on the axis every horizontal direction is)
-            const scalar u =
-                (rhoMag > VSMALL ? (b.v() & rho)/rhoMag : mag(vH)) + spin;
+            const scalar u = (b.v() & rho)/rhoMag + spin;
             h = min(h, untilTouching(wallGap, u, g));
 
             // The wall is concave: a pellet moving along it closes the gap
@@ -463,7 +461,17 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         }
         else if (!centreGaps)
         {
+            // Within the band (or on the axis): eq 38
             h = min(h, eq38(i, tubeWall));
+        }
+        else if (wallGap > band_)
+        {
+            // A sphere on the axis: every horizontal direction is radial
+            h = min
+            (
+                h,
+                timeToLeaveCircle(rho, vH, R - rb_ - 0.5*touch_)
+            );
         }
     }
 
