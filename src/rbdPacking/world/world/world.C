@@ -440,11 +440,14 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         const vector rho(b.x().x(), b.x().y(), 0);
         const scalar rhoMag = mag(rho);
         const scalar wallGap = R - rhoMag - rb_;
-        const vector vH(b.v().x(), b.v().y(), 0);
-        if (wallGap > band_ && rhoMag > VSMALL)
+        if (wallGap > band_ && (rhoMag > VSMALL || centreGaps))
         {
-            const scalar u = (b.v() & rho)/rhoMag + spin;
-            h = min(h, untilTouching(wallGap, u, g));
+            // Radial speed (a sphere on the axis: the exact time below)
+            if (rhoMag > VSMALL)
+            {
+                const scalar u = (b.v() & rho)/rhoMag + spin;
+                h = min(h, untilTouching(wallGap, u, g));
+            }
 
             // The wall is concave: a pellet moving along it closes the gap
             // faster than its radial speed says (the gap along a straight
@@ -453,6 +456,7 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
             // horizontal path to reach the radius of touching: without
             // it, a sphere skimming the wall of a 31 mm tube at 1.1 m/s
             // went 4e-5 m into it in one 1 ms step.
+            const vector vH(b.v().x(), b.v().y(), 0);
             h = min
             (
                 h,
@@ -463,15 +467,6 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
         {
             // Within the band (or on the axis): eq 38
             h = min(h, eq38(i, tubeWall));
-        }
-        else if (wallGap > band_)
-        {
-            // A sphere on the axis: every horizontal direction is radial
-            h = min
-            (
-                h,
-                timeToLeaveCircle(rho, vH, R - rb_ - 0.5*touch_)
-            );
         }
     }
 

@@ -33,6 +33,26 @@ namespace
     {
         return bs[0].kineticEnergy() + bs[1].kineticEnergy();
     }
+
+    //- One sphere touching the floor of a wide tube (wall friction mu,
+    //  restitution e) with velocity v, and its floor contact
+    struct sphereOnTheFloor
+    {
+        List<rigidBody> bs;
+        tube t;
+        DynamicList<contact> cs;
+
+        sphereOnTheFloor(const vector& v, const scalar mu, const scalar e)
+        :
+            bs(1),
+            t(1, 1, mu, e),
+            cs()
+        {
+            bs[0] = rigidBody(m, Ib, point(0, 0, a), quaternion(1), true);
+            bs[0].setState(point(0, 0, a), quaternion(1), m*v, Zero);
+            sphereContacts::sphereTube(0, bs[0], a, t, 1e-3, cs);
+        }
+    };
 }
 
 
@@ -78,7 +98,7 @@ TEST_P(twoSpheres, conserveMomentaAndObeyRestitutionLaw)
         const vector L0 = angularMomentum(bs);
         const scalar E0 = energy(bs);
 
-        collisionResolver resolver(1e-3, 1e-6, 10, 100);
+        collisionResolver resolver(1e-3, 1e-6, 10, 100, 1e-3);
         const List<contact> cs({c});
         resolver.resolve(bs, cs, 1e-9, fixed, woken);
 
@@ -120,17 +140,15 @@ TEST(collisionResolver, frictionNeverReversesSlipOnTheFloor)
 {
     // A sphere hitting the floor obliquely with high friction: the
     // tangential impulse stops the slip at most, never reverses it
-    List<rigidBody> bs(1);
-    bs[0] = rigidBody(m, Ib, point(0, 0, a), quaternion(1), true);
-    bs[0].setState(point(0, 0, a), quaternion(1), m*vector(0.2, 0, -1), Zero);
-    tube t(1, 1, 5.0, 0.5);
-    DynamicList<contact> cs;
-    sphereContacts::sphereTube(0, bs[0], a, t, 1e-3, cs);
+    sphereOnTheFloor s(vector(0.2, 0, -1), 5.0, 0.5);
+    List<rigidBody>& bs = s.bs;
+    const DynamicList<contact>& cs = s.cs;
     ASSERT_EQ(cs.size(), 1);
 
     const boolList fixed(1, false);
     boolList woken(1, false);
-    collisionResolver(1e-3, 1e-6, 10, 100).resolve(bs, cs, 1e-9, fixed, woken);
+    collisionResolver(1e-3, 1e-6, 10, 100, 1e-3)
+       .resolve(bs, cs, 1e-9, fixed, woken);
 
     const vector vp = bs[0].pointVelocity(cs[0].p);
     EXPECT_NEAR(vp.z(), 0.5, 1e-12);    // restitution 0.5 of 1 m/s
@@ -150,15 +168,9 @@ TEST(collisionResolver, approachesBelowTheToleranceAreLeftToTheRestingSolve)
         for (const scalar factor : {0.5, 2.0})
         {
             const scalar vz = -factor*tolerance*epsP;
-            List<rigidBody> bs(1);
-            bs[0] = rigidBody(m, Ib, point(0, 0, a), quaternion(1), true);
-            bs[0].setState
-            (
-                point(0, 0, a), quaternion(1), m*vector(0, 0, vz), Zero
-            );
-            tube t(1, 1, 0.0, 0.9);
-            DynamicList<contact> cs;
-            sphereContacts::sphereTube(0, bs[0], a, t, 1e-3, cs);
+            sphereOnTheFloor s(vector(0, 0, vz), 0.0, 0.9);
+            List<rigidBody>& bs = s.bs;
+            const DynamicList<contact>& cs = s.cs;
             ASSERT_EQ(cs.size(), 1);
 
             const boolList fixed(1, false);
