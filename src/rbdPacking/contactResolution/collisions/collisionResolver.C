@@ -14,12 +14,14 @@ Foam::rbd::collisionResolver::collisionResolver
     const scalar epsF,
     const label restitutionSweeps,
     const label maxSweeps,
-    const scalar approachTolerance
+    const scalar approachTolerance,
+    const scalar wakeVelocity
 )
 :
     epsP_(epsP),
     epsF_(epsF),
     approachTolerance_(approachTolerance),
+    wakeVelocity_(wakeVelocity),
     restitutionSweeps_(restitutionSweeps),
     maxSweeps_(maxSweeps)
 {}
@@ -147,10 +149,12 @@ Foam::rbd::collisionResolver::resolve
             const bool colliding = vn < -epsP_;
             const scalar e = (colliding && withRestitution) ? c.e : 0;
 
-            if (colliding && c.k >= 0 && fixed[c.k])
+            if (vn < -wakeVelocity_ && c.k >= 0 && fixed[c.k])
             {
-                // A real collision with a sleeping body wakes it; the
-                // impulse is applied once it takes part again
+                // A hard collision with a sleeping body wakes it; the
+                // impulse is applied once it takes part again. A softer
+                // one bounces off it as off the wall: the impulse is not
+                // passed on into the settled bed below
                 woken[c.k] = true;
             }
 

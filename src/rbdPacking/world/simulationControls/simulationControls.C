@@ -111,6 +111,7 @@ Foam::rbd::simulationControls::simulationControls
         1e-9, 0.1, "-")),
     sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0, "m/s")),
     sleepTime(getPositiveOrDefault(d, "sleepTime", 0.2, "s")),
+    wakeVelocity(getPositiveOrDefault(d, "wakeVelocity", 0.3, "m/s")),
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
     settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-")),
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
@@ -126,7 +127,7 @@ Foam::rbd::simulationControls::simulationControls
         "deltaT", "endTime", "gravity", "restingVelocity",
         "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
         "restitutionSweeps", "maxSweeps", "collisionTolerance",
-        "sleepVelocity", "sleepTime",
+        "sleepVelocity", "sleepTime", "wakeVelocity",
         "settleTime", "settleEnergy", "logInterval", "lcpSolver",
         "contactModel", "preset"
     };
@@ -137,6 +138,15 @@ Foam::rbd::simulationControls::simulationControls
     if (proximity > 1)
     {
         badEntry(d, "proximity", proximity, "a number in (0, 1] [-]");
+    }
+    if (wakeVelocity < restingVelocity)
+    {
+        badEntry
+        (
+            d, "wakeVelocity", wakeVelocity,
+            "a speed >= restingVelocity (" + Foam::name(restingVelocity)
+          + ") [m/s]: a slower approach is a resting contact"
+        );
     }
     if (restitutionSweeps > maxSweeps)
     {
@@ -167,6 +177,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("collisionTolerance", collisionTolerance);
     os.writeEntry("sleepVelocity", sleepVelocity);
     os.writeEntry("sleepTime", sleepTime);
+    os.writeEntry("wakeVelocity", wakeVelocity);
     os.writeEntry("settleTime", settleTime);
     os.writeEntry("settleEnergy", settleEnergy);
     os.writeEntry("logInterval", logInterval);

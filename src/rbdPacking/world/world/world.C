@@ -88,7 +88,8 @@ Foam::rbd::world::world
         controls.slipVelocity,
         controls.restitutionSweeps,
         controls.maxSweeps,
-        controls.collisionTolerance
+        controls.collisionTolerance,
+        controls.wakeVelocity
     ),
     resting_(controls.dict),
     contacts_(),
@@ -648,7 +649,6 @@ bool Foam::rbd::world::wake(const label i)
 
 Foam::scalar Foam::rbd::world::step(const scalar hMax)
 {
-    const scalar epsP = controls_.restingVelocity;
     const scalar g = controls_.gravity;
 
     // 1-2. Broad and narrow phase
@@ -658,14 +658,20 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     projectOverlaps();
 
 
-    // Sleeping bodies hit by a collision wake up first
+    // Sleeping bodies hit hard (faster than wakeVelocity) wake up first;
+    // a softer hit bounces off them in the collision stage, so that an
+    // impact on the bed is not passed on through the settled pellets
+    // below it (hard bodies pass an impulse down a touching chain within
+    // one sweep: with the threshold eps_p, every pellet arriving woke the
+    // bed down to the floor and nothing stayed asleep while filling)
+    const scalar vWake = controls_.wakeVelocity;
     bool woke = false;
     for (const contact& c : contacts_)
     {
         if (c.k >= 0 && fixed_[c.k] && c.gap <= touch_)
         {
             const scalar vn = bodies_[c.i].pointVelocity(c.p) & c.n;
-            if (vn < -epsP)
+            if (vn < -vWake)
             {
                 woke = wake(c.k) || woke;
             }

@@ -98,7 +98,7 @@ TEST_P(twoSpheres, conserveMomentaAndObeyRestitutionLaw)
         const vector L0 = angularMomentum(bs);
         const scalar E0 = energy(bs);
 
-        collisionResolver resolver(1e-3, 1e-6, 10, 100, 1e-3);
+        collisionResolver resolver(1e-3, 1e-6, 10, 100, 1e-3, 0.1);
         const List<contact> cs({c});
         resolver.resolve(bs, cs, 1e-9, fixed, woken);
 
@@ -147,7 +147,7 @@ TEST(collisionResolver, frictionNeverReversesSlipOnTheFloor)
 
     const boolList fixed(1, false);
     boolList woken(1, false);
-    collisionResolver(1e-3, 1e-6, 10, 100, 1e-3)
+    collisionResolver(1e-3, 1e-6, 10, 100, 1e-3, 0.1)
        .resolve(bs, cs, 1e-9, fixed, woken);
 
     const vector vp = bs[0].pointVelocity(cs[0].p);
@@ -176,7 +176,7 @@ TEST(collisionResolver, approachesBelowTheToleranceAreLeftToTheRestingSolve)
             const boolList fixed(1, false);
             boolList woken(1, false);
             const collisionResolver::result r =
-                collisionResolver(epsP, 1e-6, 10, 100, tolerance)
+                collisionResolver(epsP, 1e-6, 10, 100, tolerance, 0.1)
                .resolve(bs, cs, 1e-9, fixed, woken);
 
             const scalar vAfter = bs[0].v().z();
@@ -193,5 +193,42 @@ TEST(collisionResolver, approachesBelowTheToleranceAreLeftToTheRestingSolve)
                 EXPECT_NEAR(vAfter, 0, 1e-15) << tolerance;
             }
         }
+    }
+}
+
+
+TEST(collisionResolver, onlyHitsFasterThanWakeVelocityWakeASleeper)
+{
+    // Sphere 0 falls onto sphere 1, asleep: it bounces off it as off the
+    // floor (restitution e, the sleeper does not move), and wakes it only
+    // if it approaches faster than wakeVelocity
+    const scalar e = 0.9;
+    const scalar vWake = 0.1;
+    for (const scalar speed : {0.05, 0.2})
+    {
+        List<rigidBody> bs(2);
+        bs[0] = rigidBody(m, Ib, point(0, 0, 2*a), quaternion(1), true);
+        bs[1] = rigidBody(m, Ib, point(0, 0, 0), quaternion(1), true);
+        bs[0].setState(point(0, 0, 2*a), quaternion(1), m*vector(0, 0, -speed), Zero);
+
+        contact c;
+        ASSERT_TRUE
+        (
+            sphereContacts::sphereSphere(0, bs[0], a, 1, bs[1], a, 1e-3, c)
+        );
+        c.e = e;
+        c.mu = 0;
+        const List<contact> cs({c});
+
+        boolList fixed(2, false);
+        fixed[1] = true;
+        boolList woken(2, false);
+        collisionResolver(0.01, 1e-6, 10, 100, 1e-3, vWake)
+           .resolve(bs, cs, 1e-9, fixed, woken);
+
+        EXPECT_NEAR(bs[0].v().z(), e*speed, 1e-12) << speed;
+        EXPECT_EQ(mag(bs[1].v()), 0) << speed;
+        EXPECT_EQ(bool(woken[1]), speed > vWake) << speed;
+        EXPECT_FALSE(woken[0]) << speed;
     }
 }

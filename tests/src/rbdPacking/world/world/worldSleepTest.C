@@ -131,8 +131,12 @@ TEST(sleep, aSleeperWokenInTheCollisionsKeepsItsSupports)
     // stays long): the impulse passes down to the upper sleeper inside the
     // collision stage, which wakes it. Its contacts with the floor sleeper
     // were not listed while it slept; the step must list them again, or it
-    // falls into that sleeper for a whole step (~1e-4 m at deltaT 0.005 s)
-    sphereScene s(1.05*d, d, 0.3, 0.5, 0.3, 0.5, sleepOn);
+    // falls into that sleeper for a whole step (~1e-4 m at deltaT 0.005 s).
+    // wakeVelocity = eps_p, so that the slow impulse wakes the sleeper
+    sphereScene s
+    (
+        1.05*d, d, 0.3, 0.5, 0.3, 0.5, sleepOn + " wakeVelocity 0.01;"
+    );
     ASSERT_TRUE(sleepingColumn(s));
 
     s().setVelocity(2, Zero, Zero);
@@ -209,4 +213,40 @@ TEST(sleep, allContactsIncludesPairsOfSleepers)
     EXPECT_EQ(pairs, 1);
     EXPECT_EQ(floor, 1);
     EXPECT_EQ(s().bodies()[1].x(), x1);
+}
+
+
+TEST(sleep, onlyAHitFasterThanWakeVelocityWakesTheBed)
+{
+    // A sphere falls onto a sleeping column of three: hitting the top
+    // sleeper at 0.05 m/s (below wakeVelocity 0.1 m/s) it bounces off as
+    // off the floor, and the column sleeps on; at 0.5 m/s it wakes the
+    // top sleeper (the ones below, which it does not rest on, sleep on)
+    for (const scalar speed : {0.05, 0.5})
+    {
+        sphereScene s
+        (
+            1.05*d, d, 0.3, 0.5, 0.3, 0.5, sleepOn + " wakeVelocity 0.1;"
+        );
+        ASSERT_TRUE(sleepingColumn(s));
+        const point x2 = s().bodies()[2].x();
+
+        const label top = s().addBody(x2 + vector(0, 0, 1.001*d), quaternion(1));
+        s().setVelocity(top, vector(0, 0, -speed), Zero);
+        bool topBounced = false;
+        bool wokeTop = false;
+        for (label n = 0; n < 40; ++n)
+        {
+            s().advance(0.001);
+            topBounced = topBounced || s().bodies()[top].v().z() > 0;
+            wokeTop = wokeTop || !s().sleeping()[2];
+            ASSERT_TRUE(s().sleeping()[0]) << speed;
+        }
+        EXPECT_TRUE(topBounced) << speed;
+        EXPECT_EQ(wokeTop, speed > 0.1) << speed;
+        if (speed < 0.1)
+        {
+            EXPECT_EQ(s().bodies()[2].x(), x2);
+        }
+    }
 }
