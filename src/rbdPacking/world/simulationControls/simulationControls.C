@@ -109,7 +109,7 @@ Foam::rbd::simulationControls::simulationControls
     maxSweeps(getLabelOrDefault(d, "maxSweeps", 200, 1)),
     collisionTolerance(getInRangeOrDefault(d, "collisionTolerance", 1e-3,
         1e-9, 0.1, "-")),
-    sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0, "m/s")),
+    sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0.001, "m/s")),
     sleepTime(getPositiveOrDefault(d, "sleepTime", 0.2, "s")),
     wakeVelocity(getPositiveOrDefault(d, "wakeVelocity", 0.3, "m/s")),
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),

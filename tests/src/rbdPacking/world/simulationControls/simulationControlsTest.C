@@ -26,7 +26,7 @@ TEST(simulationControls, defaults)
     EXPECT_DOUBLE_EQ(c.proximity, 0.1);
     EXPECT_DOUBLE_EQ(c.neighbourSkin, 0.5);
     EXPECT_DOUBLE_EQ(c.contactTolerance, 1e-4);
-    EXPECT_EQ(c.sleepVelocity, 0);
+    EXPECT_DOUBLE_EQ(c.sleepVelocity, 0.001);
     EXPECT_DOUBLE_EQ(c.wakeVelocity, 0.3);
 }
 

@@ -33,7 +33,7 @@ namespace
         :
             container(tubeDiameter, 1, mu, e),
             shape(pelletShape::New(parseDict(pellets))),
-            controls(parseDict(simulation)),
+            controls(simulationDict(simulation)),
             material{8030, mu, e},
             w()
         {

@@ -68,7 +68,7 @@ namespace
         :
             container(tubeDiameter, 1, 0.6, 0.6),
             shape(pelletShape::New(parseDict(pellets))),
-            controls(parseDict(simulation)),
+            controls(simulationDict(simulation)),
             material{8030, 0.1, 0.9},
             w(),
             probe(shape->mesh())
