@@ -85,6 +85,19 @@ TABLE3 = {
 }
 
 
+def loadingEndTime(number, dp=0.01, spacing=1.2, columns=1, g=9.81):
+    """endTime [s] for a bed of 'number' pellets whose loading would not
+    fit in the default 30 s, else None (the default kept, and with it the
+    cached runs). A column releases its next pellet when the previous one
+    has fallen 'spacing' dp: every sqrt(2 spacing dp/g) s (0.049 s for
+    10 mm spheres); more than 25 s of loading gets twice that plus 10 s
+    for settling."""
+    loading = number / columns * math.sqrt(2 * spacing * dp / g)
+    if loading <= 25:
+        return None
+    return round(2 * loading + 10)
+
+
 def sphereBed(tubeDiameter, dp=0.01, fillHeight=None, number=None,
               tubeHeight=None, seed=1, positionDisturbance=0.1,
               porosityHeight=None, sleepVelocity=0.001):
