@@ -110,6 +110,17 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
             << exit(FatalIOError);
     }
 
+    // Safety net that fits the loading (the default 30 s stopped a bed of
+    // 1000 spheres in one column with 606 released)
+    if (!controls_.endTimeGiven)
+    {
+        controls_.endTime = endTimeForLoading
+        (
+            controls_.endTime, number_, loading_->nColumns(),
+            loading_->clearance(), controls_.gravity
+        );
+    }
+
     // Rotation: spheres without friction never pick up spin
     rotates_ = pelletsDict.getOrDefault<bool>("rotation", true);
     if
@@ -150,6 +161,30 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     (
         new world(tube_, shape, material_, rotates_, controls_)
     );
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::rbd::packedBed::endTimeForLoading
+(
+    const scalar endTime,
+    const label number,
+    const label columns,
+    const scalar clearance,
+    const scalar g
+)
+{
+    // A column releases its next pellet when the previous one has fallen
+    // the clearance from rest: every sqrt(2 clearance/g) s (0.049 s for
+    // 10 mm spheres, spacing 1.2)
+    if (g <= 0 || columns < 1)
+    {
+        return endTime;
+    }
+    const scalar interval = Foam::sqrt(2*clearance/g);
+    const scalar loading = std::ceil(scalar(number)/columns)*interval;
+    return max(endTime, 2*loading + 10);
 }
 
 

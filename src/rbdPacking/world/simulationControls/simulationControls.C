@@ -97,6 +97,7 @@ Foam::rbd::simulationControls::simulationControls
 :
     deltaT(getPositiveOrDefault(d, "deltaT", 0.025, "s")),
     endTime(getPositiveOrDefault(d, "endTime", 30, "s")),
+    endTimeGiven(d.found("endTime")),
     gravity(getNonNegativeOrDefault(d, "gravity", 9.81, "m/s^2")),
     restingVelocity(getPositiveOrDefault(d, "restingVelocity", 0.01, "m/s")),
     slipVelocity(getPositiveOrDefault(d, "slipVelocity", 1e-4, "m/s")),

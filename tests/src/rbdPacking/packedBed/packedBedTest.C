@@ -1,5 +1,6 @@
 // Unit tests for src/rbdPacking/packedBed: the binned inside-sphere test
-// that gives bedCaseWriter its locationInMesh check, against brute force
+// that gives bedCaseWriter its locationInMesh check, against brute force,
+// and the safety-net endTime that fits the loading
 
 #include <gtest/gtest.h>
 #include "packedBed.H"
@@ -81,4 +82,31 @@ TEST(packedBed, insideAnySphereOfNoSpheres)
 {
     const auto inside = rbd::packedBed::insideAnySphere(pointField(), 0.01);
     EXPECT_FALSE(inside(point::zero));
+}
+
+
+TEST(packedBed, endTimeLeavesTwiceTheLoadingTime)
+{
+    // 10 mm spheres, spacing 1.2: one release per fall of 12 mm from rest
+    const scalar g = 9.81;
+    const scalar interval = std::sqrt(2*0.012/g);
+    EXPECT_NEAR(interval, 0.0495, 1e-4);
+
+    // Small beds keep the given 30 s
+    EXPECT_EQ(rbd::packedBed::endTimeForLoading(30, 100, 1, 0.012, g), 30);
+
+    // 1000 in one column: 49.5 s of loading, 109 s; four columns: 250 each
+    EXPECT_NEAR
+    (
+        rbd::packedBed::endTimeForLoading(30, 1000, 1, 0.012, g),
+        2*1000*interval + 10, 1e-9
+    );
+    EXPECT_NEAR
+    (
+        rbd::packedBed::endTimeForLoading(30, 1000, 4, 0.012, g),
+        2*250*interval + 10, 1e-9
+    );
+
+    // No gravity: nothing falls, the given value stays
+    EXPECT_EQ(rbd::packedBed::endTimeForLoading(30, 1000, 1, 0.012, 0), 30);
 }
