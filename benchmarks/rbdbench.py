@@ -87,11 +87,14 @@ TABLE3 = {
 
 def loadingEndTime(number, dp=0.01, spacing=1.2, columns=1, g=9.81):
     """endTime [s] for a bed of 'number' pellets whose loading would not
-    fit in the default 30 s, else None (the default kept, and with it the
-    cached runs). A column releases its next pellet when the previous one
-    has fallen 'spacing' dp: every sqrt(2 spacing dp/g) s (0.049 s for
+    fit in 30 s (the fixed default of engines before aba4643), else None:
+    the entry is left out, so the beds run before keep their dictionaries
+    and cached runs. A column releases its next pellet when the previous
+    one has fallen 'spacing' dp: every sqrt(2 spacing dp/g) s (0.049 s for
     10 mm spheres); more than 25 s of loading gets twice that plus 10 s
-    for settling."""
+    for settling. rbdPackBed now fits endTime to the loading itself when
+    it is not given (packedBed::endTimeForLoading, twice the loading + 10
+    s beyond 30 s); this keeps the benchmarks the same on older engines."""
     loading = number / columns * math.sqrt(2 * spacing * dp / g)
     if loading <= 25:
         return None

@@ -151,9 +151,10 @@ Foam::rbd::collisionResolver::resolve
 
             if (vn < -wakeVelocity_ && c.k >= 0 && fixed[c.k])
             {
-                // A hard collision with a sleeping body wakes it; the
-                // impulse is applied once it takes part again. A softer
-                // one bounces off it as off the wall: the impulse is not
+                // A hard collision with a sleeping body wakes it, at rest:
+                // this impulse is reflected off it as off the wall (the
+                // sleeper takes part from the caller's next pass on). A
+                // softer one only bounces off it: the impulse is not
                 // passed on into the settled bed below
                 woken[c.k] = true;
             }

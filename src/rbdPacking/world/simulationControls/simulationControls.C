@@ -112,7 +112,13 @@ Foam::rbd::simulationControls::simulationControls
         1e-9, 0.1, "-")),
     sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0.001, "m/s")),
     sleepTime(getPositiveOrDefault(d, "sleepTime", 0.2, "s")),
-    wakeVelocity(getPositiveOrDefault(d, "wakeVelocity", 0.3, "m/s")),
+    wakeVelocity
+    (
+        getPositiveOrDefault
+        (
+            d, "wakeVelocity", max(scalar(0.3), restingVelocity), "m/s"
+        )
+    ),
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
     settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-")),
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),

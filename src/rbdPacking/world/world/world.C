@@ -682,8 +682,8 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
         findContacts();
     }
 
-    // 4. Collisions. A sleeper hit in them (by an impulse passed along the
-    //    bed) wakes, but the contact list was built with it asleep: its
+    // 4. Collisions. A sleeper hit in them faster than wakeVelocity (by an
+    //    impulse passed along the bed) wakes, but the contact list was built with it asleep: its
     //    contacts with the container and with other sleepers are missing.
     //    The list is built again and the collisions resolved once more
     //    (rarely more than once): without it, the woken pellet was stepped

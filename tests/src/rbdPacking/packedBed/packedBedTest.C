@@ -107,6 +107,13 @@ TEST(packedBed, endTimeLeavesTwiceTheLoadingTime)
         2*250*interval + 10, 1e-9
     );
 
+    // 1001 in four columns: the fullest column releases 251
+    EXPECT_NEAR
+    (
+        rbd::packedBed::endTimeForLoading(30, 1001, 4, 0.012, g),
+        2*251*interval + 10, 1e-9
+    );
+
     // No gravity: nothing falls, the given value stays
     EXPECT_EQ(rbd::packedBed::endTimeForLoading(30, 1000, 1, 0.012, 0), 30);
 }

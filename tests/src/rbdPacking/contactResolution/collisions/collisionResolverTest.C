@@ -209,7 +209,10 @@ TEST(collisionResolver, onlyHitsFasterThanWakeVelocityWakeASleeper)
         List<rigidBody> bs(2);
         bs[0] = rigidBody(m, Ib, point(0, 0, 2*a), quaternion(1), true);
         bs[1] = rigidBody(m, Ib, point(0, 0, 0), quaternion(1), true);
-        bs[0].setState(point(0, 0, 2*a), quaternion(1), m*vector(0, 0, -speed), Zero);
+        bs[0].setState
+        (
+            point(0, 0, 2*a), quaternion(1), m*vector(0, 0, -speed), Zero
+        );
 
         contact c;
         ASSERT_TRUE

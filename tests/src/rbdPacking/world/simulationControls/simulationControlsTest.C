@@ -66,6 +66,36 @@ TEST(simulationControlsDeath, skinOutOfRange)
 }
 
 
+TEST(simulationControls, endTimeGivenOrLeftToTheLoading)
+{
+    EXPECT_FALSE(rbd::simulationControls(parse("")).endTimeGiven);
+    const rbd::simulationControls c(parse("endTime 12;"));
+    EXPECT_TRUE(c.endTimeGiven);
+    EXPECT_DOUBLE_EQ(c.endTime, 12);
+}
+
+
+TEST(simulationControls, wakeVelocityDefaultIsAtLeastRestingVelocity)
+{
+    EXPECT_DOUBLE_EQ
+    (
+        rbd::simulationControls(parse("restingVelocity 0.5;")).wakeVelocity,
+        0.5
+    );
+}
+
+
+TEST(simulationControlsDeath, wakeVelocityBelowRestingVelocity)
+{
+    EXPECT_EXIT
+    (
+        rbd::simulationControls(parse("wakeVelocity 0.001;")),
+        ::testing::ExitedWithCode(1),
+        "wakeVelocity 0.001(.|\n)*restingVelocity"
+    );
+}
+
+
 TEST(simulationControls, presetDefaultIsTheBuiltInDefaults)
 {
     const rbd::simulationControls none(parse(""));

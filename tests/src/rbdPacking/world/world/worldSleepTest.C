@@ -221,7 +221,10 @@ TEST(sleep, onlyAHitFasterThanWakeVelocityWakesTheBed)
     // A sphere falls onto a sleeping column of three: hitting the top
     // sleeper at 0.05 m/s (below wakeVelocity 0.1 m/s) it bounces off as
     // off the floor, and the column sleeps on; at 0.5 m/s it wakes the
-    // top sleeper (the ones below, which it does not rest on, sleep on)
+    // top sleeper, which passes 0.375 m/s on to the middle one (woken
+    // too); the bottom one is reached slower than wakeVelocity and sleeps
+    // on. 40 ms: the bounce is over (the fast case: the top sphere leaves
+    // at 0.25 m/s within the first steps)
     for (const scalar speed : {0.05, 0.5})
     {
         sphereScene s
@@ -231,7 +234,8 @@ TEST(sleep, onlyAHitFasterThanWakeVelocityWakesTheBed)
         ASSERT_TRUE(sleepingColumn(s));
         const point x2 = s().bodies()[2].x();
 
-        const label top = s().addBody(x2 + vector(0, 0, 1.001*d), quaternion(1));
+        const label top =
+            s().addBody(x2 + vector(0, 0, 1.001*d), quaternion(1));
         s().setVelocity(top, vector(0, 0, -speed), Zero);
         bool topBounced = false;
         bool wokeTop = false;
