@@ -157,6 +157,25 @@ Foam::word Foam::rbd::getChoiceOrDefault
 }
 
 
+Foam::dictionary Foam::rbd::subDictOrEmpty
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (e && !e->isDict())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Bad entry '" << key << "' in " << dict.name() << nl
+            << "    it is not a sub-dictionary; allowed: " << key
+            << " { ... } (or no entry, for the defaults)" << nl
+            << exit(FatalIOError);
+    }
+    return dict.subOrEmptyDict(key);
+}
+
+
 void Foam::rbd::checkKnownEntries
 (
     const dictionary& dict,

@@ -33,7 +33,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     fillHeight_(0),
     rotates_(true),
     loading_(),
-    controls_(dict.subOrEmptyDict("simulation")),
+    controls_(subDictOrEmpty(dict, "simulation")),
     porosityHeight_(-1),
     radialBins_(100),
     axialBins_(100),
@@ -62,7 +62,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
 
     loading_.reset
     (
-        new loadingScheme(dict.subOrEmptyDict("loading"), tube_, shape)
+        new loadingScheme(subDictOrEmpty(dict, "loading"), tube_, shape)
     );
 
     // How many pellets: 'number', or 'fillHeight' with the porosity
@@ -132,7 +132,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     }
 
     // Analysis
-    const dictionary& analysisDict = dict.subOrEmptyDict("analysis");
+    const dictionary analysisDict(subDictOrEmpty(dict, "analysis"));
     checkKnownEntries
     (
         analysisDict, {"porosityHeight", "radialBins", "axialBins"}
@@ -153,7 +153,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
             tube_.diameter(),
             shape.volumeEquivalentDiameter(),
             point::zero,
-            dict.subOrEmptyDict("cfdCase")
+            subDictOrEmpty(dict, "cfdCase")
         )
     );
 

@@ -4,6 +4,7 @@
 
 #include "lcpSolver.H"
 #include "error.H"
+#include "dictionaryChecks.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -31,7 +32,7 @@ Foam::autoPtr<Foam::rbd::lcpSolver> Foam::rbd::lcpSolver::New
 
     return autoPtr<lcpSolver>
     (
-        cstrIter()(dict.subOrEmptyDict(solverType + "Coeffs"))
+        cstrIter()(subDictOrEmpty(dict, solverType + "Coeffs"))
     );
 }
 
