@@ -253,6 +253,10 @@ def parseSetOption(items):
             raise SystemExit("--set needs block/entry=value, not '%s'"
                              % item)
         k, v = item.split('=', 1)
+        if v.strip().startswith('{'):
+            raise SystemExit("--set takes one entry, not a dictionary "
+                             "('%s'): give each as block/sub/entry=value"
+                             % item)
         out[k.strip()] = parseScalar(v.strip())
     return out
 
