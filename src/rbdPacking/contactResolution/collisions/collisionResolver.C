@@ -149,7 +149,7 @@ Foam::rbd::collisionResolver::resolve
             const bool colliding = vn < -epsP_;
             const scalar e = (colliding && withRestitution) ? c.e : 0;
 
-            if (vn < -wakeVelocity_ && c.k >= 0 && fixed[c.k])
+            if (wakes(c, vn, fixed))
             {
                 // A hard collision with a sleeping body wakes it, at rest:
                 // this impulse is reflected off it as off the wall (the

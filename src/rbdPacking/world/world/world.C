@@ -664,14 +664,13 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     // below it (hard bodies pass an impulse down a touching chain within
     // one sweep: with the threshold eps_p, every pellet arriving woke the
     // bed down to the floor and nothing stayed asleep while filling)
-    const scalar vWake = controls_.wakeVelocity;
     bool woke = false;
     for (const contact& c : contacts_)
     {
         if (c.k >= 0 && fixed_[c.k] && c.gap <= touch_)
         {
             const scalar vn = bodies_[c.i].pointVelocity(c.p) & c.n;
-            if (vn < -vWake)
+            if (collisions_.wakes(c, vn, fixed_))
             {
                 woke = wake(c.k) || woke;
             }
@@ -683,8 +682,9 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     }
 
     // 4. Collisions. A sleeper hit in them faster than wakeVelocity (by an
-    //    impulse passed along the bed) wakes, but the contact list was built with it asleep: its
-    //    contacts with the container and with other sleepers are missing.
+    //    impulse passed along the bed) wakes, but the contact list was
+    //    built with it asleep: its contacts with the container and with
+    //    other sleepers are missing.
     //    The list is built again and the collisions resolved once more
     //    (rarely more than once): without it, the woken pellet was stepped
     //    without its floor and fell 0.15 mm into it in one step.
