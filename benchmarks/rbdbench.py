@@ -101,6 +101,15 @@ def loadingEndTime(number, dp=0.01, spacing=1.2, columns=1, g=9.81):
     return round(2 * loading + 10)
 
 
+def fitEndTimeToLoading(d, number, dp=0.01):
+    """Set simulation/endTime of the bed dictionary d to
+    loadingEndTime(number) where that is not None."""
+    endTime = loadingEndTime(number, dp=dp)
+    if endTime:
+        d['simulation']['endTime'] = endTime
+    return d
+
+
 def sphereBed(tubeDiameter, dp=0.01, fillHeight=None, number=None,
               tubeHeight=None, seed=1, positionDisturbance=0.1,
               porosityHeight=None, sleepVelocity=0.001):
