@@ -102,9 +102,16 @@ namespace
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::rbd::restingContactSolver::restingContactSolver(const dictionary& dict)
+Foam::rbd::restingContactSolver::restingContactSolver
+(
+    const dictionary& dict,
+    const scalar compliance
+)
 :
-    solver_(lcpSolver::New(dict))
+    solver_(lcpSolver::New(dict)),
+    compliance_(compliance),
+    normalForces_(),
+    active_()
 {}
 
 
@@ -123,6 +130,8 @@ Foam::rbd::restingContactSolver::solve
 {
     result res;
     res.contacts = contacts.size();
+    normalForces_.setSize(contacts.size());
+    normalForces_ = 0;
     if (contacts.empty())
     {
         return res;
@@ -252,6 +261,16 @@ Foam::rbd::restingContactSolver::solve
         Eigen::SparseMatrix<double> A(n, n);
         A.setFromTriplets(triplets.begin(), triplets.end());
 
+        // The compliance of the mesh contacts (see the header): one
+        // solution where redundant contact points make A singular
+        Eigen::VectorXd shift(n);
+        for (label a = 0; a < n; ++a)
+        {
+            shift(a) =
+                contacts[cs[a]].centreBased ? 0 : compliance_*A.coeff(a, a);
+            A.coeffRef(a, a) += shift(a);
+        }
+
         // B: d'' without contact forces (eq 28), plus the step term
         Eigen::VectorXd B(n);
         for (label a = 0; a < n; ++a)
@@ -332,7 +351,7 @@ Foam::rbd::restingContactSolver::solve
             // and the next solve repair.
             for (label a = 0; a < n; ++a)
             {
-                const scalar Aaa = A.coeff(a, a);
+                const scalar Aaa = A.coeff(a, a) - shift(a);
                 phi(a) = Aaa > 0 ? min(phi(a), max(-B(a), 0.0)/Aaa) : 0;
             }
         }
@@ -454,6 +473,7 @@ Foam::rbd::restingContactSolver::solve
             contacts[ci], phiAll[ci]*contacts[ci].n, bodies, fixed, F, tau
         );
     }
+    normalForces_ = phiAll;
 
     return res;
 }

@@ -122,6 +122,8 @@ Foam::rbd::simulationControls::simulationControls
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
     settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-")),
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
+    restingCompliance(getInRangeOrDefault(d, "restingCompliance", 1e-4, 0,
+        0.01, "-")),
     contactModel
     (
         getChoiceOrDefault(d, "contactModel", "auto", contactModels)
@@ -136,6 +138,7 @@ Foam::rbd::simulationControls::simulationControls
         "restitutionSweeps", "maxSweeps", "collisionTolerance",
         "sleepVelocity", "sleepTime", "wakeVelocity",
         "settleTime", "settleEnergy", "logInterval", "lcpSolver",
+        "restingCompliance",
         "contactModel", "preset"
     };
     // <name>Coeffs of every LCP solver there is
@@ -188,6 +191,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("settleTime", settleTime);
     os.writeEntry("settleEnergy", settleEnergy);
     os.writeEntry("logInterval", logInterval);
+    os.writeEntry("restingCompliance", restingCompliance);
     os.writeEntry("contactModel", contactModel);
 }
 

@@ -91,7 +91,7 @@ Foam::rbd::world::world
         controls.collisionTolerance,
         controls.wakeVelocity
     ),
-    resting_(controls.dict),
+    resting_(controls.dict, controls.restingCompliance),
     contacts_(),
     F_(),
     tau_(),

@@ -94,17 +94,46 @@ class restingCylinder : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(restingCylinder, onItsFaceStays)
 {
-    shapeScene s(0.05, cylinder10, "contactModel " + GetParam() + ";");
-    const point x0(0.003, -0.002, 0.005);
-    s().addBody(x0, quaternion(1));
+    // Exact resting forces (restingCompliance 0): at rest to round-off.
+    // Compliant (the default): the face's contacts sink by the compliance
+    // each step until the overlap correction lifts them at the slop
+    // (contactTolerance dp = 1e-6 m): the cylinder saws between the floor
+    // and the slop, never further, at a few um/s
+    const scalar slop = 1e-4*0.01;
+    for (const bool exact : {true, false})
+    {
+        shapeScene s
+        (
+            0.05, cylinder10,
+            "contactModel " + GetParam() + ";"
+          + (exact ? "restingCompliance 0;" : "")
+        );
+        const point x0(0.003, -0.002, 0.005);
+        s().addBody(x0, quaternion(1));
 
-    s().advance(10);
-    const rigidBody& b = s().bodies()[0];
-    EXPECT_LT(mag(b.x() - x0), 1e-6);
-    EXPECT_GT(axisOf(b).z(), 1 - 1e-9);
-    EXPECT_LT(s.maxSpeed(), 1e-6);
-    EXPECT_LT(s().currentMaxOverlap(), 1e-6);
-    EXPECT_LT(s().stats().maxOverlap, 1e-6);
+        s().advance(10);
+        const rigidBody& b = s().bodies()[0];
+        std::cout
+            << "[ measured ] exact " << exact << ": drift "
+            << mag(b.x() - x0) << " m, speed " << s.maxSpeed()
+            << " m/s, overlap " << s().stats().maxOverlap << " m"
+            << std::endl;
+        EXPECT_GT(axisOf(b).z(), 1 - 1e-9);
+        if (exact)
+        {
+            EXPECT_LT(mag(b.x() - x0), 1e-6);
+            EXPECT_LT(s.maxSpeed(), 1e-6);
+            EXPECT_LT(s().currentMaxOverlap(), 1e-6);
+            EXPECT_LT(s().stats().maxOverlap, 1e-6);
+        }
+        else
+        {
+            EXPECT_LT(mag(b.x() - x0), slop);
+            EXPECT_LT(s.maxSpeed(), 1e-5);
+            EXPECT_LT(s().currentMaxOverlap(), 1.05*slop);
+            EXPECT_LT(s().stats().maxOverlap, 1.05*slop);
+        }
+    }
 }
 
 TEST_P(restingCylinder, lyingOnItsSideStays)
@@ -142,7 +171,10 @@ TEST_P(restingCylinder, balancedOnItsRimFallsAndComesToRest)
     const scalar z = 0.005*(Foam::cos(tilt) + Foam::sin(tilt)) + 1e-6;
     s().addBody(point(0, 0, z), quaternion(vector(1, 0, 0), tilt));
 
-    s().advance(1.5);
+    // (3 s: the mesh cylinder may land on its side on a vertex row of its
+    // polygon, an unstable equilibrium it leaves for a face after a time
+    // round-off decides: 0.9 s in one run, toppled and at rest at 1.5 s)
+    s().advance(3);
     const rigidBody& b = s().bodies()[0];
     EXPECT_LT(mag(axisOf(b).z()), 0.02);
     EXPECT_NEAR(b.x().z(), 0.005, 5e-4);

@@ -1,0 +1,181 @@
+// Resting contact forces of src/rbdPacking/contactResolution/resting
+// (eqs 27-35) on redundant contact points: the compliance of mesh contacts
+// (restingCompliance) makes the forces unique and continuous
+
+#include <gtest/gtest.h>
+#include "restingContactSolver.H"
+#include "../../testTools/worldFixture.H"
+#include <random>
+
+using namespace Foam;
+using namespace Foam::rbd;
+
+namespace
+{
+    // A cylinder d = h = 10 mm of steel standing on its flat face
+    const scalar a = 0.005;
+    const scalar m = 8030*M_PI*a*a*2*a;
+    const vector Ib
+    (
+        m*(3*a*a + 4*a*a)/12, m*(3*a*a + 4*a*a)/12, 0.5*m*a*a
+    );
+    const scalar g = 9.81;
+    const scalar h = 1e-3;
+
+    //- The cylinder on the floor, touching it at n points of its rim at
+    //  irregular angles (a mesh's vertices), each a hair above the floor:
+    //  gaps of up to 1e-12 m, the round-off of a mesh transformed into
+    //  place, which no rigid motion closes all at once
+    struct cylinderOnItsFace
+    {
+        List<rigidBody> bs;
+        boolList fixed;
+        DynamicList<contact> cs;
+
+        cylinderOnItsFace(const label n, const unsigned seed)
+        :
+            bs(1),
+            fixed(1, false),
+            cs()
+        {
+            const point x(0, 0, a);
+            bs[0] = rigidBody(m, Ib, x, quaternion(1), true);
+
+            std::mt19937 rng(seed);
+            std::uniform_real_distribution<double> U(0, 1);
+            for (label k = 0; k < n; ++k)
+            {
+                const scalar angle = 2*M_PI*(k + 0.4*U(rng))/n;
+                contact c;
+                c.i = 0;
+                c.k = tubeBottom;
+                c.n = vector(0, 0, 1);
+                c.gap = 1e-12*U(rng);
+                c.p = point(a*Foam::cos(angle), a*Foam::sin(angle), c.gap);
+                c.ri = c.p - x;
+                c.rk = point(c.p.x(), c.p.y(), 0);
+                cs.append(c);
+            }
+        }
+
+        //- The normal forces [N]; F and tau the resultant on the body
+        List<scalar> forces
+        (
+            const scalar compliance,
+            vector& F,
+            vector& tau,
+            const word& solver = "blockPivoting"
+        ) const
+        {
+            const restingContactSolver rs
+            (
+                rbdTest::parseDict("lcpSolver " + solver + ";"), compliance
+            );
+            List<vector> Fs(1, vector(0, 0, -m*g));
+            List<vector> taus(1, Zero);
+            rs.solve(bs, cs, fixed, h, Fs, taus);
+            F = Fs[0];
+            tau = taus[0];
+            return rs.normalForces();
+        }
+    };
+}
+
+
+TEST(restingCompliance, sharesTheWeightOverRedundantPoints)
+{
+    // Twelve rim points: the weight is shared by all of them (the exact
+    // LCP has no unique answer; the compliant one is close to the least
+    // sum of squares: every point carries about mg/12), and the cylinder
+    // is held (no acceleration beyond the compliance's, c g)
+    const scalar c = 1e-4;
+    for (const word solver : {"blockPivoting", "baraff"})
+    {
+        for (unsigned seed = 1; seed <= 3; ++seed)
+        {
+            const cylinderOnItsFace s(12, seed);
+            vector F, tau;
+            const List<scalar> phi = s.forces(c, F, tau, solver);
+            scalar sum = 0;
+            for (const scalar f : phi)
+            {
+                EXPECT_GT(f, 0.5*m*g/12) << solver << " seed " << seed;
+                EXPECT_LT(f, 1.5*m*g/12) << solver << " seed " << seed;
+                sum += f;
+            }
+            EXPECT_NEAR(sum, m*g, 10*c*m*g) << solver;
+            EXPECT_LT(mag(F), 10*c*m*g) << solver;
+            EXPECT_LT(mag(tau), 10*c*m*g*a) << solver;
+        }
+    }
+}
+
+
+TEST(restingCompliance, exactForcesPickAVertexOfTheSolutionSet)
+{
+    // The same problem solved exactly (restingCompliance 0): the weight
+    // goes to a few points and the rest carry nothing, a choice that
+    // round-off decides (what made settled cylinders creep)
+    for (unsigned seed = 1; seed <= 3; ++seed)
+    {
+        const cylinderOnItsFace s(12, seed);
+        vector F, tau;
+        const List<scalar> phi = s.forces(0, F, tau);
+        label carrying = 0;
+        for (const scalar f : phi)
+        {
+            carrying += f > 1e-3*m*g;
+        }
+        EXPECT_LE(carrying, 6) << "seed " << seed;
+        EXPECT_LT(mag(F), 1e-6*m*g);
+    }
+}
+
+
+TEST(restingCompliance, forcesChangeLittleWithRoundOff)
+{
+    // Gaps drawn again (another round-off): the compliant forces move by
+    // a fraction of a share, where the exact ones jump between vertices
+    const scalar c = 1e-4;
+    const cylinderOnItsFace s1(12, 7);
+    cylinderOnItsFace s2(12, 7);
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<double> U(0, 1);
+    for (contact& ct : s2.cs)
+    {
+        ct.gap = 1e-12*U(rng);
+    }
+    vector F, tau;
+    const List<scalar> phi1 = s1.forces(c, F, tau);
+    const List<scalar> phi2 = s2.forces(c, F, tau);
+    forAll(phi1, k)
+    {
+        EXPECT_LT(mag(phi1[k] - phi2[k]), 0.1*m*g/12) << k;
+    }
+}
+
+
+TEST(restingCompliance, leavesSphereContactsExact)
+{
+    // A centre-based contact (a sphere on the floor) gets no compliance:
+    // its force is m g exactly, so a resting sphere does not sink
+    List<rigidBody> bs(1);
+    bs[0] = rigidBody(m, Ib, point(0, 0, a), quaternion(1), true);
+    DynamicList<contact> cs;
+    contact c;
+    c.i = 0;
+    c.k = tubeBottom;
+    c.n = vector(0, 0, 1);
+    c.p = point(0, 0, 0);
+    c.centreBased = true;
+    cs.append(c);
+    const restingContactSolver rs(rbdTest::parseDict(""), 1e-2);
+    List<vector> Fs(1, vector(0, 0, -m*g));
+    List<vector> taus(1, Zero);
+    rs.solve(bs, cs, boolList(1, false), h, Fs, taus);
+    EXPECT_NEAR(rs.normalForces()[0], m*g, 1e-12*m*g);
+    EXPECT_LT(mag(Fs[0]), 1e-12*m*g);
+}
+
+
+// ************************************************************************* //
