@@ -122,7 +122,7 @@ Foam::rbd::simulationControls::simulationControls
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
     settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-")),
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
-    restingCompliance(getInRangeOrDefault(d, "restingCompliance", 1e-4, 0,
+    restingCompliance(getInRangeOrDefault(d, "restingCompliance", 1e-5, 0,
         0.01, "-")),
     contactModel
     (

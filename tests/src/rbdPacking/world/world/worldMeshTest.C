@@ -98,7 +98,7 @@ TEST_P(restingCylinder, onItsFaceStays)
     // Compliant (the default): the face's contacts sink by the compliance
     // each step until the overlap correction lifts them at the slop
     // (contactTolerance dp = 1e-6 m): the cylinder saws between the floor
-    // and the slop, never further, at a few um/s
+    // and the slop, never further, well below 1 um/s
     const scalar slop = 1e-4*0.01;
     for (const bool exact : {true, false})
     {
