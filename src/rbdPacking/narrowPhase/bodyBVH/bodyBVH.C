@@ -241,20 +241,7 @@ Foam::scalar Foam::rbd::bodyBVH::boxDistance
     const point& p
 ) const
 {
-    const node& nd = nodes_[n];
-    scalar d2 = 0;
-    for (direction j = 0; j < 3; ++j)
-    {
-        if (p[j] < nd.lo[j])
-        {
-            d2 += sqr(nd.lo[j] - p[j]);
-        }
-        else if (p[j] > nd.hi[j])
-        {
-            d2 += sqr(p[j] - nd.hi[j]);
-        }
-    }
-    return Foam::sqrt(d2);
+    return Foam::sqrt(boxDistanceSqr(n, p));
 }
 
 
