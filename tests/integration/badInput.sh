@@ -63,6 +63,27 @@ endfacet
 endsolid open
 STL
             fi ;;
+    casefile) # -case names a file, not a directory
+            touch "$tmp/notADirectory"; caseArg="$tmp/notADirectory" ;;
+    file)   # a regular file where an output directory goes
+            mkdir -p "$(dirname "$tmp/case/$2")"; touch "$tmp/case/$2" ;;
+    stlnan) # a binary STL tetrahedron with one NaN coordinate
+            foamDictionary "$dict" -entry pellets/shape -set stl >/dev/null 2>&1
+            foamDictionary "$dict" -entry pellets/diameter -remove >/dev/null 2>&1
+            foamDictionary "$dict" -entry pellets/faces -remove >/dev/null 2>&1
+            foamDictionary "$dict" -entry pellets/file -add '"constant/pellet.stl"' >/dev/null 2>&1
+            foamDictionary "$dict" -entry pellets/scale -add 0.01 >/dev/null 2>&1
+            mkdir -p "$tmp/case/constant"
+            stl="$tmp/case/constant/pellet.stl"
+            # floats, little endian: 0, 1, NaN
+            z='\x00\x00\x00\x00'; o='\x00\x00\x80\x3f'; n='\x00\x00\xc0\x7f'
+            { printf '%080d' 0 | tr 0 ' '; printf '\x04\x00\x00\x00'
+              for tri in "$z$z$z $o$z$z $z$o$z" "$z$z$z $z$z$o $o$z$z" \
+                         "$z$z$z $z$o$z $z$z$o" "$o$z$z $n$z$o $z$o$z"
+              do
+                  printf "$z$z$z"; for v in $tri; do printf "$v"; done
+                  printf '\x00\x00'
+              done; } > "$stl" ;;
     *)      echo "unknown action '$1'"; exit 2 ;;
 esac
 
@@ -80,7 +101,8 @@ if ! grep -Ezq -- "$expect" "$tmp/log"
 then
     echo "FAIL: log does not match: $expect"; fail=1
 fi
-if [ "$1" != nocase ] && [ "$1" != nodict ] && ! grep -q "packingDict" "$tmp/log"
+if [ "$1" != nocase ] && [ "$1" != nodict ] && [ "$1" != file ] \
+    && ! grep -q "packingDict" "$tmp/log"
 then
     echo "FAIL: the error does not name packingDict"; fail=1
 fi

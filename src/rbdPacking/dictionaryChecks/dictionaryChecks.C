@@ -19,7 +19,7 @@ namespace
         return s;
     }
 
-    Foam::string inUnit(const char* what, const Foam::word& unit)
+    Foam::string inUnit(const Foam::string& what, const Foam::word& unit)
     {
         Foam::string s(what);
         if (!unit.empty() && unit != "-")
@@ -28,6 +28,30 @@ namespace
         }
         return s;
     }
+
+    //- What a bounded number may be: "a number > 0 [m] (below 1e+15)", or
+    //  "a number in (0, hi] [m]" when hi is a real bound (below GREAT)
+    Foam::string bounded
+    (
+        const char* lower,
+        const char* open,
+        const Foam::scalar hi,
+        const Foam::word& unit
+    )
+    {
+        if (hi < Foam::GREAT)
+        {
+            return inUnit
+            (
+                Foam::string("a number in ") + open + ", " + Foam::name(hi)
+              + "]",
+                unit
+            );
+        }
+        return
+            inUnit(Foam::string("a number ") + lower, unit)
+          + " (below " + Foam::name(Foam::GREAT) + ")";
+    }
 }
 
 
@@ -35,13 +59,14 @@ Foam::scalar Foam::rbd::getPositive
 (
     const dictionary& dict,
     const word& key,
-    const word& unit
+    const word& unit,
+    const scalar hi
 )
 {
     const scalar value = dict.get<scalar>(key);
-    if (!(value > 0))
+    if (!(value > 0 && value <= hi))
     {
-        badEntry(dict, key, value, inUnit("a number > 0", unit));
+        badEntry(dict, key, value, bounded("> 0", "(0", hi, unit));
     }
     return value;
 }
@@ -52,13 +77,14 @@ Foam::scalar Foam::rbd::getPositiveOrDefault
     const dictionary& dict,
     const word& key,
     const scalar deflt,
-    const word& unit
+    const word& unit,
+    const scalar hi
 )
 {
     const scalar value = dict.getOrDefault<scalar>(key, deflt);
-    if (!(value > 0))
+    if (!(value > 0 && value <= hi))
     {
-        badEntry(dict, key, value, inUnit("a number > 0", unit));
+        badEntry(dict, key, value, bounded("> 0", "(0", hi, unit));
     }
     return value;
 }
@@ -69,13 +95,14 @@ Foam::scalar Foam::rbd::getNonNegativeOrDefault
     const dictionary& dict,
     const word& key,
     const scalar deflt,
-    const word& unit
+    const word& unit,
+    const scalar hi
 )
 {
     const scalar value = dict.getOrDefault<scalar>(key, deflt);
-    if (!(value >= 0))
+    if (!(value >= 0 && value <= hi))
     {
-        badEntry(dict, key, value, inUnit("a number >= 0", unit));
+        badEntry(dict, key, value, bounded(">= 0", "[0", hi, unit));
     }
     return value;
 }
@@ -125,15 +152,20 @@ Foam::label Foam::rbd::getLabelOrDefault
     const dictionary& dict,
     const word& key,
     const label deflt,
-    const label lo
+    const label lo,
+    const label hi
 )
 {
     const label value = dict.getOrDefault<label>(key, deflt);
-    if (value < lo)
+    if (value < lo || value > hi)
     {
         badEntry
         (
-            dict, key, value, "a whole number >= " + Foam::name(lo)
+            dict, key, value,
+            hi < labelMax
+          ? "a whole number in [" + Foam::name(lo) + ", " + Foam::name(hi)
+          + "]"
+          : "a whole number >= " + Foam::name(lo)
         );
     }
     return value;

@@ -10,8 +10,20 @@
 #include "OSspecific.H"
 #include "boundBox.H"
 #include <memory>
+#include <unistd.h>
 
 using Foam::constant::mathematical::pi;
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::rbd::packedBed::minPelletSize = 1e-5;
+
+const Foam::scalar Foam::rbd::packedBed::maxPelletSize = 10;
+
+const Foam::scalar Foam::rbd::packedBed::minBodyRatio = 0.05;
+
+const Foam::scalar Foam::rbd::packedBed::maxBlockCells = 5e7;
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -22,7 +34,8 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     shape_(pelletShape::New(dict.subDict("pellets"))),
     material_
     {
-        getPositive(dict.subDict("pellets"), "density", "kg/m^3"),
+        // Denser than any solid (osmium: 22 590 kg/m^3) is a typo
+        getPositive(dict.subDict("pellets"), "density", "kg/m^3", 1e5),
         getNonNegativeOrDefault(dict.subDict("pellets"), "friction", 0.1, "-"),
         getInRangeOrDefault
         (
@@ -37,6 +50,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     porosityHeight_(-1),
     radialBins_(100),
     axialBins_(100),
+    dictName_(dict.name()),
     caseSettings_(),
     world_(),
     settled_(false),
@@ -46,6 +60,31 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     const dictionary& containerDict = dict.subDict("container");
     const dictionary& pelletsDict = dict.subDict("pellets");
     const pelletShape& shape = shape_();
+
+    // A misspelt block (loadng { ... }) would be ignored and its defaults
+    // taken silently. Plain entries at the top level stay allowed: they
+    // are the variables of $macros.
+    {
+        const wordList blocks
+        ({
+            "FoamFile", "container", "pellets", "loading", "simulation",
+            "analysis", "cfdCase"
+        });
+        for (const entry& e : dict)
+        {
+            if (e.isDict() && !blocks.found(e.keyword()))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Unknown block '" << e.keyword() << "' in "
+                    << dict.name() << nl << "    allowed:";
+                for (const word& b : blocks)
+                {
+                    FatalIOError<< ' ' << b;
+                }
+                FatalIOError<< exit(FatalIOError);
+            }
+        }
+    }
 
     // The tube must take a pellet in any orientation
     const scalar rb = shape.boundingRadius();
@@ -60,17 +99,96 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         );
     }
 
-    loading_.reset
-    (
-        new loadingScheme(subDictOrEmpty(dict, "loading"), tube_, shape)
-    );
+    // Pellets the engine's tolerances are made for (its lengths are
+    // relative to the pellet, but round-off is not), and pellets with a
+    // body: a wall, a coin, a needle or a sliver much thinner than the
+    // pellet is wide has a volume-equivalent diameter dpv far below its
+    // size, and the CFD grid (cellsPerDiameter per dpv) would be sized to
+    // the sliver (a 1e-9 m high tetrahedron asked for a 1.6 GB tube.stl)
+    if (!(2*rb >= minPelletSize && 2*rb <= maxPelletSize))
+    {
+        FatalIOErrorInFunction(pelletsDict)
+            << "Bad pellet size in " << pelletsDict.name() << nl
+            << "    pellets of shape " << shape.type() << " with a bounding "
+            << "diameter of " << 2*rb << " m; allowed: " << minPelletSize
+            << " to " << maxPelletSize << " m" << nl
+            << exit(FatalIOError);
+    }
+    const scalar dpv = shape.volumeEquivalentDiameter();
+    if (!(dpv >= minBodyRatio*2*rb))
+    {
+        FatalIOErrorInFunction(pelletsDict)
+            << "Bad pellet shape in " << pelletsDict.name() << nl
+            << "    pellets of shape " << shape.type() << " with a volume-"
+            << "equivalent diameter of " << dpv << " m, " << dpv/(2*rb)
+            << " of their bounding diameter " << 2*rb << " m: a wall, a "
+            << "coin, a needle or a sliver this thin" << nl
+            << "    allowed: a volume-equivalent diameter at least "
+            << minBodyRatio << " of the bounding diameter" << nl
+            << exit(FatalIOError);
+    }
+
+    // The overlap correction leaves interpenetrations of contactTolerance
+    // dp; the proximity band must hold them with room to spare, or the
+    // step that keeps contacts within the band collapses (1e-18 s seen
+    // with the tolerance twice the band: a hang, not an error)
+    {
+        const scalar slop = controls_.contactTolerance*shape.diameter();
+        const scalar band = controls_.proximity*rb;
+        if (slop > 0.25*band)
+        {
+            badEntry
+            (
+                controls_.dict, "contactTolerance",
+                controls_.contactTolerance,
+                "a tolerance of at most a quarter of the proximity band: "
+                "contactTolerance dp <= proximity r_b/4, here <= "
+              + Foam::name(0.25*band/shape.diameter()) + " (proximity "
+              + Foam::name(controls_.proximity) + ", r_b "
+              + Foam::name(rb) + " m, dp " + Foam::name(shape.diameter())
+              + " m)"
+            );
+        }
+    }
+
+    // A packing needs gravity (the engine alone may run without: free
+    // flight in the tests)
+    if (!(controls_.gravity > 0))
+    {
+        badEntry
+        (
+            controls_.dict, "gravity", controls_.gravity,
+            "a number > 0 [m/s^2] (pellets must fall to pack)"
+        );
+    }
+
+    // The enumeration solver is a test reference (at most 16 contacts)
+    if (controls_.dict.getOrDefault<word>("lcpSolver", "") == "enumeration")
+    {
+        badEntry
+        (
+            controls_.dict, "lcpSolver", word("enumeration"),
+            "blockPivoting | baraff | projectedGaussSeidel (enumeration is "
+            "the tests' reference, limited to 16 contacts)"
+        );
+    }
+
+    const dictionary loadingDict(subDictOrEmpty(dict, "loading"));
+    loading_.reset(new loadingScheme(loadingDict, tube_, shape));
 
     // How many pellets: 'number', or 'fillHeight' with the porosity
-    // estimated by Benyahia and O'Neill's correlation for any shape
+    // estimated by Benyahia and O'Neill's correlation for any shape, kept
+    // within [densest, loosest]: outside its range (very thin rings, N
+    // below 2) the correlation gives porosities near or above 1
+    const scalar densest = 0.26;
+    const scalar loosest = 0.95;
     const scalar R = tube_.radius();
     const scalar N = tube_.diameter()/shape.volumeEquivalentDiameter();
-    const scalar epsEstimate =
-        correlations::benyahiaONeill(N, shape.sphericity());
+    const scalar epsEstimate = min
+    (
+        max(correlations::benyahiaONeill(N, shape.sphericity()), densest),
+        loosest
+    );
     const bool hasNumber = pelletsDict.found("number");
     const bool hasFill = pelletsDict.found("fillHeight");
     if (hasNumber == hasFill)
@@ -80,6 +198,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
             << "(bed height to fill [m]) in " << pelletsDict.name()
             << exit(FatalIOError);
     }
+    const scalar release = loading_->releaseHeight() - rb;
     if (hasNumber)
     {
         number_ = getPositiveLabel(pelletsDict, "number");
@@ -87,6 +206,18 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     else
     {
         fillHeight_ = getPositive(pelletsDict, "fillHeight", "m");
+        if (fillHeight_ > release)
+        {
+            badEntry
+            (
+                pelletsDict, "fillHeight", fillHeight_,
+                "a height below the lowest release point of a pellet, "
+              + Foam::name(release) + " m (loading/releaseHeight "
+              + Foam::name(loading_->releaseHeight()) + " m less the "
+                "bounding radius; container height "
+              + Foam::name(tube_.height()) + " m)"
+            );
+        }
         number_ = max
         (
             label(1),
@@ -95,19 +226,55 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         );
     }
 
-    // The pellets must fit below the release height
-    const scalar heightEstimate =
-        number_*shape.volume()/((1 - epsEstimate)*pi*sqr(R));
-    if (heightEstimate > tube_.height())
+    // The pellets must fit below the release points: for certain if they
+    // cannot even at the densest porosity, probably if they cannot at the
+    // estimate (then the run stops releasing when the bed reaches the
+    // release height, and the summary says how many it holds)
+    const scalar solidHeight = number_*shape.volume()/(pi*sqr(R));
+    if (solidHeight/(1 - densest) > release)
     {
         FatalIOErrorInFunction(containerDict)
             << "Bad entry 'height " << tube_.height() << ";' in "
             << containerDict.name() << nl
-            << "    " << number_ << " pellets fill about " << heightEstimate
-            << " m of this tube (porosity " << epsEstimate
-            << " by Benyahia and O'Neill); allowed: a height above that, "
+            << "    " << number_ << " pellets fill at least "
+            << solidHeight/(1 - densest) << " m of this tube (porosity "
+            << densest << "), about " << solidHeight/(1 - epsEstimate)
+            << " m (porosity " << epsEstimate << " by Benyahia and "
+            << "O'Neill); they are released from " << release << " m"
+            << nl << "    allowed: a taller container (or releaseHeight), "
             << "or fewer pellets" << nl
             << exit(FatalIOError);
+    }
+    if (solidHeight/(1 - epsEstimate) > release)
+    {
+        WarningInFunction
+            << number_ << " pellets fill about "
+            << solidHeight/(1 - epsEstimate) << " m of this tube (porosity "
+            << epsEstimate << " by Benyahia and O'Neill), more than the "
+            << release << " m below the release points: the bed may reach "
+            << "them first, and the run then stops releasing" << nl << endl;
+    }
+
+    // A column releases its next pellet once the last one is the
+    // clearance (spacing) away from the release point: a pellet lying on
+    // the floor must be that far below it, or a second is never released
+    const scalar spacingUnit = max(shape.diameter(), 2*rb);
+    if
+    (
+        number_ > loading_->nColumns()
+     && loading_->releaseHeight() - rb < loading_->clearance()
+    )
+    {
+        badEntry
+        (
+            loadingDict, "spacing", loading_->clearance()/spacingUnit,
+            "a spacing the release height allows: a pellet lying on the "
+            "floor must be spacing x " + Foam::name(spacingUnit)
+          + " m below the release point, here at most "
+          + Foam::name((loading_->releaseHeight() - rb)/spacingUnit)
+          + " (releaseHeight " + Foam::name(loading_->releaseHeight())
+          + " m; or a taller container)"
+        );
     }
 
     // Safety net that fits the loading (the default 30 s stopped a bed of
@@ -139,10 +306,16 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     );
     if (analysisDict.found("porosityHeight"))
     {
-        porosityHeight_ = getPositive(analysisDict, "porosityHeight", "m");
+        // The bed lies in the tube
+        porosityHeight_ = getPositive
+        (
+            analysisDict, "porosityHeight", "m", tube_.height()
+        );
     }
-    radialBins_ = getLabelOrDefault(analysisDict, "radialBins", 100, 1);
-    axialBins_ = getLabelOrDefault(analysisDict, "axialBins", 100, 1);
+    radialBins_ =
+        getLabelOrDefault(analysisDict, "radialBins", 100, 1, 100000);
+    axialBins_ =
+        getLabelOrDefault(analysisDict, "axialBins", 100, 1, 100000);
 
     // Case writing: every option now, the bed height after the run. The
     // tube axis is z through the origin, its floor at z = 0.
@@ -156,6 +329,29 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
             subDictOrEmpty(dict, "cfdCase")
         )
     );
+
+    // The CFD case's background grid for a bed as high as the tube, the
+    // most it can be: checked now, not after the packing
+    {
+        bedCaseSettings tallest(caseSettings_());
+        tallest.setBedHeight(tube_.height());
+        const labelVector& n = tallest.blockCells();
+        const scalar cells = scalar(n.x())*n.y()*n.z();
+        if (cells > maxBlockCells)
+        {
+            FatalIOErrorInFunction(dict)
+                << "The CFD case of " << dict.name() << " is too fine: "
+                << "a background grid of " << n << " cells (cfdCase/"
+                << "cellsPerDiameter " << tallest.cellsPerDiameter()
+                << " per volume-equivalent diameter " << dpv << " m, "
+                << "a bed up to " << tube_.height() << " m high)" << nl
+                << "    allowed: at most " << maxBlockCells << " cells; "
+                << "lower cellsPerDiameter" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    checkOutputDirectories();
 
     world_.reset
     (
@@ -238,6 +434,43 @@ Foam::label Foam::rbd::packedBed::releasePellets
     }
 
     return released;
+}
+
+
+void Foam::rbd::packedBed::checkOutputDirectories() const
+{
+    // Checked before the packing, so that an output directory that cannot
+    // be written does not stop the run halfway through writing
+    const fileName root(runTime_.path());
+    if (::access(root.c_str(), W_OK) != 0)
+    {
+        FatalErrorInFunction
+            << "Cannot write into the case directory " << root << nl
+            << exit(FatalError);
+    }
+    for
+    (
+        const word dir
+      : {
+            "constant", "constant/triSurface", "postProcessing",
+            "postProcessing/rbdPackBed", "system", "0"
+        }
+    )
+    {
+        const fileName path(root/dir);
+        if (Foam::exists(path, false) && !Foam::isDir(path))
+        {
+            FatalErrorInFunction
+                << "Cannot write the outputs: " << path << " is there but"
+                << " not a directory" << nl << exit(FatalError);
+        }
+        if (Foam::isDir(path) && ::access(path.c_str(), W_OK) != 0)
+        {
+            FatalErrorInFunction
+                << "Cannot write the outputs: directory " << path
+                << " is not writable" << nl << exit(FatalError);
+        }
+    }
 }
 
 
@@ -387,7 +620,9 @@ void Foam::rbd::packedBed::writeSettings(Ostream& os) const
     }
     else
     {
-        os.writeKeyword("porosityHeight") << "bedHeight - 1 dp" << nl;
+        // A comment: the echo stays a valid dictionary
+        os.indent();
+        os  << "// porosityHeight: the bed height - 1 dp (default)" << nl;
     }
     os.writeEntry("radialBins", radialBins_);
     os.writeEntry("axialBins", axialBins_);
@@ -419,6 +654,15 @@ void Foam::rbd::packedBed::run()
     const scalar mass = material_.density*shape.volume();
     const scalar Eref = number_*mass*ctrl.gravity*shape.diameter();
     const scalar moving = ctrl.restingVelocity;
+
+    // A release point blocked this long means the bed has reached it: ten
+    // times the fall of the clearance from rest (0.5 s for 10 mm spheres
+    // at 9.81 m/s^2), at least 2 s
+    const scalar stallTime = max
+    (
+        scalar(2),
+        10*Foam::sqrt(2*loading_->clearance()/ctrl.gravity)
+    );
 
     labelList lastOfColumn(loading_->nColumns(), -1);
     label released = 0;
@@ -454,13 +698,13 @@ void Foam::rbd::packedBed::run()
         if
         (
             released < number_ && !warnedStall
-         && w.time() - lastRelease > 2
+         && w.time() - lastRelease > stallTime
         )
         {
             WarningInFunction
-                << "No pellet could be released for 2 s: the bed has "
-                << "reached the release height with " << released << " of "
-                << number_ << " pellets" << endl;
+                << "No pellet could be released for " << stallTime
+                << " s: the bed has reached the release height with "
+                << released << " of " << number_ << " pellets" << endl;
             warnedStall = true;
         }
         // The kinetic-energy test once every pellet is in, or once no more
@@ -550,6 +794,31 @@ void Foam::rbd::packedBed::write() const
 
     bedCaseSettings caseSettings(caseSettings_());
     caseSettings.setBedHeight(bedHeight());
+
+    // The one check of the CFD case that needs the bed, made before
+    // anything is written
+    {
+        point location;
+        if
+        (
+           !bedCaseWriter::findLocationInMesh
+            (
+                caseSettings, insidePellet(caseSettings.pelletScale()),
+                location
+            )
+        )
+        {
+            FatalErrorInFunction
+                << "Bad entry 'cellsPerDiameter "
+                << caseSettings.cellsPerDiameter() << ";' in "
+                << fileName(dictName_ + ".cfdCase") << nl
+                << "    no point of the background grid is in the fluid for "
+                << "snappyHexMesh's locationInMesh (every cell is within one "
+                << "cell of a pellet or two of the tube wall); allowed: a "
+                << "finer grid, more cells per diameter. Nothing written."
+                << nl << exit(FatalError);
+        }
+    }
 
     bedOutput out(runTime_.path(), tube_, shape, w.bodies());
     out.writePellets();

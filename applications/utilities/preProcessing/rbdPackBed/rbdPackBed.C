@@ -41,6 +41,7 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "IOdictionary.H"
+#include "sigFpe.H"
 #include "packedBed.H"
 
 using namespace Foam;
@@ -90,6 +91,14 @@ int main(int argc, char *argv[])
     {
         dictIO = IOobject::selectIO(dictIO, args.get<fileName>("dict"));
     }
+    if (!isDir(runTime.path()))
+    {
+        FatalErrorInFunction
+            << "The case " << runTime.path() << " is not a directory" << nl
+            << "    (-case names the case directory, the one with "
+            << "system/packingDict)" << nl
+            << exit(FatalError);
+    }
     if (!isFile(dictIO.objectPath()))
     {
         FatalErrorInFunction
@@ -100,7 +109,16 @@ int main(int argc, char *argv[])
     }
 
     Info<< "Reading " << dictIO.objectPath() << nl << endl;
-    IOdictionary packingDict(dictIO);
+
+    // A number beyond the range of double (diameter 1e400) stops
+    // OpenFOAM's parser on a floating-point exception: read without the
+    // trap, so that the entry's check reports it (inf is not a size)
+    autoPtr<IOdictionary> packingDictPtr;
+    {
+        const sigFpe::ignore noTrap;
+        packingDictPtr.reset(new IOdictionary(dictIO));
+    }
+    const IOdictionary& packingDict = packingDictPtr();
 
     // Validate everything, then run, then write
     rbd::packedBed bed(runTime, packingDict);

@@ -11,6 +11,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- A fit statistic for a header line (10 digits): "n/a" where it is
+    //  undefined (a profile of one bin has no variance). As const char*:
+    //  an Ostream quotes a string
+    std::string statistic(const Foam::scalar x)
+    {
+        if (std::isnan(x))
+        {
+            return "n/a";
+        }
+        std::ostringstream os;
+        os.precision(10);
+        os << x;
+        return os.str();
+    }
+
+    //- Header line for a tube where Mueller's recalled form does not apply
+    std::string muellerNotApplicable(const Foam::scalar N)
+    {
+        std::ostringstream os;
+        os  << "# Mueller: not applicable at N = " << N
+            << " (recalled form: N >= 2.61, singular at N = 3.156);"
+            << " no column\n";
+        return os.str();
+    }
+}
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -275,7 +306,10 @@ Foam::dictionary Foam::rbd::bedVoidage::sphereRadialFits
 
     dictionary fits;
     fits.add("deKlerk", fit(deKlerk));
-    fits.add("mueller", fit(mueller));
+    if (correlations::muellerApplies(2*R_/dp))
+    {
+        fits.add("mueller", fit(mueller));
+    }
     return fits;
 }
 
@@ -300,6 +334,9 @@ void Foam::rbd::bedVoidage::writeRadialProfile
         this->sphereCorrelations(r, dp, deKlerk, mueller);
     }
 
+    const bool withMueller =
+        sphereCorrelations && correlations::muellerApplies(N);
+
     const int oldPrecision = os.precision(10);
 
     os  << "# Radial void fraction, eq 39: eps(r) = 1 - S_int(r)/S_total(r),"
@@ -312,15 +349,25 @@ void Foam::rbd::bedVoidage::writeRadialProfile
     {
         os  << "# deKlerk: de Klerk 2003 (recalled form), eps_b = bulk"
             << " porosity above; R^2 = "
-            << correlations::rSquared(eps, deKlerk)
-            << ", RMSE = " << correlations::rmse(eps, deKlerk) << nl
-            << "# Mueller: Mueller 1992 (recalled form, suspect for N < 10:"
-            << " see correlations.H), eps_b = "
-            << correlations::muellerBulk(N) << "; R^2 = "
-            << correlations::rSquared(eps, mueller)
-            << ", RMSE = " << correlations::rmse(eps, mueller) << nl
-            << "# r [m]  (R-r)/dp [-]  eps [-]  deKlerk [-]  Mueller [-]"
-            << nl;
+            << statistic(correlations::rSquared(eps, deKlerk)).c_str()
+            << ", RMSE = "
+            << statistic(correlations::rmse(eps, deKlerk)).c_str() << nl;
+        if (withMueller)
+        {
+            os  << "# Mueller: Mueller 1992 (recalled form, suspect for"
+                << " N < 10: see correlations.H), eps_b = "
+                << correlations::muellerBulk(N) << "; R^2 = "
+                << statistic(correlations::rSquared(eps, mueller)).c_str()
+                << ", RMSE = "
+                << statistic(correlations::rmse(eps, mueller)).c_str() << nl
+                << "# r [m]  (R-r)/dp [-]  eps [-]  deKlerk [-]  Mueller [-]"
+                << nl;
+        }
+        else
+        {
+            os  << muellerNotApplicable(N).c_str()
+                << "# r [m]  (R-r)/dp [-]  eps [-]  deKlerk [-]" << nl;
+        }
     }
     else
     {
@@ -332,7 +379,11 @@ void Foam::rbd::bedVoidage::writeRadialProfile
         os  << r[k] << ' ' << zWall[k] << ' ' << eps[k];
         if (sphereCorrelations)
         {
-            os  << ' ' << deKlerk[k] << ' ' << mueller[k];
+            os  << ' ' << deKlerk[k];
+        }
+        if (withMueller)
+        {
+            os  << ' ' << mueller[k];
         }
         os  << nl;
     }
@@ -371,16 +422,30 @@ void Foam::rbd::bedVoidage::writeSphereCorrelations
         << " m, N = dt/dp = " << 2*R_/dp << nl
         << "# deKlerk: de Klerk 2003 (recalled form), eps_b = bulk porosity "
         << bulkPorosity() << " (z from " << zLow_ << " to " << zHigh_
-        << " m)" << nl
-        << "# Mueller: Mueller 1992 (recalled form, suspect for N < 10:"
-        << " see correlations.H), eps_b = "
-        << correlations::muellerBulk(2*R_/dp) << nl
-        << "# r [m]  (R-r)/dp [-]  deKlerk [-]  Mueller [-]" << nl;
+        << " m)" << nl;
+    const scalar N = 2*R_/dp;
+    const bool withMueller = correlations::muellerApplies(N);
+    if (withMueller)
+    {
+        os  << "# Mueller: Mueller 1992 (recalled form, suspect for N < 10:"
+            << " see correlations.H), eps_b = "
+            << correlations::muellerBulk(N) << nl
+            << "# r [m]  (R-r)/dp [-]  deKlerk [-]  Mueller [-]" << nl;
+    }
+    else
+    {
+        os  << muellerNotApplicable(N).c_str()
+            << "# r [m]  (R-r)/dp [-]  deKlerk [-]" << nl;
+    }
 
     forAll(r, k)
     {
-        os  << r[k] << ' ' << (R_ - r[k])/dp << ' ' << deKlerk[k] << ' '
-            << mueller[k] << nl;
+        os  << r[k] << ' ' << (R_ - r[k])/dp << ' ' << deKlerk[k];
+        if (withMueller)
+        {
+            os  << ' ' << mueller[k];
+        }
+        os  << nl;
     }
 
     os.precision(oldPrecision);

@@ -175,10 +175,16 @@ Foam::scalar Foam::rbd::correlations::muellerBulk(const scalar N)
 }
 
 
+bool Foam::rbd::correlations::muellerApplies(const scalar N)
+{
+    return N >= 2.61 && std::abs(N - 3.156) >= 0.1;
+}
+
+
 Foam::scalar Foam::rbd::correlations::mueller(const scalar z, const scalar N)
 {
     // RECALLED form (see correlations.md): check against Mueller 1992
-    if (!(N >= 2.61))
+    if (!muellerApplies(N))
     {
         return notANumber;
     }

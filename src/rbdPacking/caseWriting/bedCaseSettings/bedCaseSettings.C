@@ -122,9 +122,14 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
     pelletDiameter_(pelletDiameter),
     bedHeight_(0),
     floorCentre_(floorCentre),
-    cellsPerDiameter_(getLabelOrDefault(options, "cellsPerDiameter", 8, 2)),
-    pelletLevel_(getLabelOrDefault(options, "pelletLevel", 1, 0)),
-    wallLevel_(getLabelOrDefault(options, "wallLevel", 0, 0)),
+    // Upper bounds: the background grid and tube.stl grow as the cube and
+    // the square of cellsPerDiameter, tube.stl by four per wallLevel
+    cellsPerDiameter_
+    (
+        getLabelOrDefault(options, "cellsPerDiameter", 8, 2, 64)
+    ),
+    pelletLevel_(getLabelOrDefault(options, "pelletLevel", 1, 0, 5)),
+    wallLevel_(getLabelOrDefault(options, "wallLevel", 0, 0, 4)),
     inletLengthRequested_
     (
         getPositiveOrDefault(options, "inletLength", 2*pelletDiameter, "m")

@@ -9,8 +9,8 @@
 
 Foam::rbd::tube::tube(const dictionary& dict)
 :
-    diameter_(getPositive(dict, "diameter", "m")),
-    height_(getPositive(dict, "height", "m")),
+    diameter_(getPositive(dict, "diameter", "m", 100)),
+    height_(getPositive(dict, "height", "m", 1000)),
     friction_(getNonNegativeOrDefault(dict, "friction", 0.6, "-")),
     restitution_(getInRangeOrDefault(dict, "restitution", 0.6, 0, 1, "-"))
 {

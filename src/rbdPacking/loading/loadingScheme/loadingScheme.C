@@ -64,13 +64,15 @@ Foam::rbd::loadingScheme::loadingScheme
     (
         dict, "releaseHeight", container.height() - rb_, "m"
     );
-    if (releaseHeight_ <= rb_)
+    if (releaseHeight_ <= rb_ || releaseHeight_ > container.height() - rb_)
     {
         badEntry
         (
             dict, "releaseHeight", releaseHeight_,
-            "a height above the pellet bounding radius ("
-          + Foam::name(rb_) + ") [m]"
+            "a height in (" + Foam::name(rb_) + ", "
+          + Foam::name(container.height() - rb_) + "] [m] (a pellet "
+            "released there is within the tube: above the floor by its "
+            "bounding radius, below the top of the container by it)"
         );
     }
 

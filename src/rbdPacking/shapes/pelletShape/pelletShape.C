@@ -35,7 +35,7 @@ Foam::rbd::pelletShape::pelletShape
     faces_
     (
         dict.found("faces")
-      ? getLabelOrDefault(dict, "faces", defaultFaces, 20)
+      ? getLabelOrDefault(dict, "faces", defaultFaces, 20, 200000)
       : defaultFaces
     ),
     mesh_()

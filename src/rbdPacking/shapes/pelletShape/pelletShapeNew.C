@@ -26,7 +26,30 @@ Foam::autoPtr<Foam::rbd::pelletShape> Foam::rbd::pelletShape::New
             << exit(FatalIOError);
     }
 
-    return cstrIter()(dict);
+    // The meshing (CGAL) may refuse a shape whose entries passed their
+    // checks (fifty holes of 0.5 mm: their polygons cross): a clear error,
+    // not an abort
+    try
+    {
+        return cstrIter()(dict);
+    }
+    catch (const Foam::error&)
+    {
+        throw;
+    }
+    catch (const std::exception& e)
+    {
+        std::string what(e.what());
+        what = what.substr(0, what.find('\n'));
+        FatalIOErrorInFunction(dict)
+            << "Bad pellet shape in " << dict.name() << nl
+            << "    the " << shapeType << " these entries describe cannot be"
+            << " meshed (" << what.c_str() << ")" << nl
+            << "    allowed: a shape whose features fit (fewer or larger "
+            << "holes or lobes, more faces)" << nl
+            << exit(FatalIOError);
+    }
+    return nullptr;
 }
 
 

@@ -22,6 +22,11 @@ namespace rbd
 }
 
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::rbd::ring::minWall = 0.01;
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::ring::ring(const dictionary& dict)
@@ -33,12 +38,18 @@ Foam::rbd::ring::ring(const dictionary& dict)
 {
     checkEntries(dict, {"diameter", "innerDiameter", "height"});
 
-    if (di_ >= d_)
+    // A wall of at least 1 % of the diameter (Raschig rings have 5-20 %):
+    // a thinner one is a film that neither the contacts nor a CFD mesh
+    // resolve
+    if (di_ > (1 - 2*minWall)*d_)
     {
         badEntry
         (
             dict, "innerDiameter", di_,
-            "a number > 0 and below diameter (" + Foam::name(d_) + ") [m]"
+            "a number > 0 and at most " + Foam::name(1 - 2*minWall)
+          + " diameter = " + Foam::name((1 - 2*minWall)*d_) + " [m] (a "
+            "wall of at least " + Foam::name(100*minWall) + " % of the "
+            "diameter " + Foam::name(d_) + " m)"
         );
     }
 }

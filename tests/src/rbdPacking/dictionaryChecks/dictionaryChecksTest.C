@@ -61,3 +61,29 @@ TEST(dictionaryChecksDeath, rejectsMisspeltKeyword)
         "Unknown entry 'diamter'"
     );
 }
+
+TEST(dictionaryChecksDeath, rejectsValuesAboveTheirBound)
+{
+    // An explicit bound, and the default one (GREAT) that keeps overflows
+    // (a density of 1e300) and inf out of the arithmetic
+    const dictionary d = parse("rho 1e300; n 2000000000; x 1e20;");
+    EXPECT_EXIT
+    (
+        rbd::getPositive(d, "rho", "kg/m^3", 1e5),
+        ::testing::ExitedWithCode(1),
+        "Bad entry 'rho 1e\\+300;'(.|\n)*a number in \\(0, 100000\\]"
+    );
+    EXPECT_EXIT
+    (
+        rbd::getLabelOrDefault(d, "n", 100, 1, 100000),
+        ::testing::ExitedWithCode(1),
+        "Bad entry 'n 2000000000;'(.|\n)*a whole number in \\[1, 100000\\]"
+    );
+    EXPECT_EXIT
+    (
+        rbd::getNonNegativeOrDefault(d, "x", 0, "m"),
+        ::testing::ExitedWithCode(1),
+        "Bad entry 'x 1e\\+20;'(.|\n)*>= 0 \\[m\\] \\(below 1e\\+15\\)"
+    );
+    EXPECT_DOUBLE_EQ(rbd::getPositive(parse("a 1e5;"), "a", "-", 1e5), 1e5);
+}

@@ -14,6 +14,7 @@
 #include <CGAL/IO/STL.h>
 
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <fstream>
 #include <numeric>
@@ -22,6 +23,7 @@
 
 #include "cgalMeshTools.H"
 #include "OSspecific.H"
+#include "sigFpe.H"
 #include "OStringStream.H"
 #include "error.H"
 
@@ -600,11 +602,49 @@ bool Foam::rbd::cgalMeshTools::readSTL
         return false;
     }
 
+    // A binary STL (84 + 50 n bytes) is checked for vertices that are not
+    // finite numbers first: CGAL merges equal points through a map, where
+    // a NaN compares equal to any point, so the NaN vanished into a wrong
+    // surface ("inward oriented") instead of being reported
+    {
+        is.seekg(0, std::ios::end);
+        const std::streamoff size = is.tellg();
+        std::uint32_t n = 0;
+        if (size >= 84 && is.seekg(80) && is.read(reinterpret_cast<char*>(&n), 4)
+         && size == 84 + 50*std::streamoff(n))
+        {
+            for (std::uint32_t t = 0; t < n; ++t)
+            {
+                float f[12];
+                is.read(reinterpret_cast<char*>(f), sizeof(f));
+                is.ignore(2);
+                for (int j = 3; j < 12; ++j)
+                {
+                    if (!std::isfinite(f[j]))
+                    {
+                        reason =
+                            "a vertex of triangle " + Foam::name(label(t))
+                          + " of " + file + " has a coordinate that is not"
+                            " a finite number";
+                        return false;
+                    }
+                }
+            }
+        }
+        is.clear();
+        is.seekg(0);
+    }
+
     std::vector<cgalPoint> pts;
     std::vector<soupTriangle> tris;
     bool ok = false;
     try
     {
+        // A binary STL holds any 32-bit floats (NaN, or random bytes in a
+        // file that is not an STL): CGAL's parser computes with them, and
+        // OpenFOAM's trapping of floating-point exceptions would stop the
+        // run there. The coordinates are checked below.
+        const sigFpe::ignore noTrap;
         ok = CGAL::IO::read_STL(is, pts, tris);
     }
     catch (const std::exception&)

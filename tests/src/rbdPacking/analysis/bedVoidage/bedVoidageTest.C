@@ -386,8 +386,47 @@ TEST(bedVoidage, sphereRadialFitsAgainstProfile)
     // Mueller's form is undefined below N = 2.61: no statistics
     const rbd::bedVoidage narrow(s, 1.2, 4);
     const dictionary narrowFits(narrow.sphereRadialFits(nBins, dp));
-    EXPECT_TRUE(narrowFits.subDict("mueller").empty());
+    EXPECT_FALSE(narrowFits.found("mueller"));
     EXPECT_TRUE(narrowFits.subDict("deKlerk").found("rmse"));
+}
+
+
+TEST(bedVoidage, writesNoNaNWhereMuellerDoesNotApply)
+{
+    // N = 2.4 (below Mueller's range) and N = 3.156 (the pole of its a,
+    // where rbdPackBed stopped on a division by zero): the profile and the
+    // correlation files have no Mueller column and no NaN
+    const scalar a = 0.5, dp = 2*a;
+    for (const scalar N : {2.4, 3.156})
+    {
+        const scalar R = 0.5*N*dp;
+        const rbd::sphereSolidSet s(randomBed(R, a, 0, 4, 10, 3), a);
+        const rbd::bedVoidage bed(s, R, 4);
+        const fileName dir("bedVoidageNoMuellerTest.tmp");
+        rmDir(dir);
+        bed.write(dir, 20, 8, dp, true);
+        for (const word file : {"radialPorosity.dat", "radialCorrelations.dat"})
+        {
+            std::ifstream is(dir/file);
+            const std::string text
+            (
+                (std::istreambuf_iterator<char>(is)),
+                std::istreambuf_iterator<char>()
+            );
+            EXPECT_EQ(text.find("nan"), std::string::npos) << file;
+            EXPECT_NE(text.find("Mueller: not applicable"), std::string::npos)
+                << file;
+            const auto data = rows(text);
+            ASSERT_FALSE(data.empty()) << file;
+            // r, z, (eps,) de Klerk
+            EXPECT_EQ
+            (
+                data.front().size(),
+                file == "radialPorosity.dat" ? 4u : 3u
+            ) << file << " at N = " << N;
+        }
+        rmDir(dir);
+    }
 }
 
 

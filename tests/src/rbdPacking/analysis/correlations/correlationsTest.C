@@ -144,6 +144,15 @@ TEST(correlations, radialVoidFractionAtWallAndFar)
     EXPECT_NEAR(corr::deKlerk(20, 0.4), 0.4, 1e-5);
     EXPECT_NEAR(corr::muellerBulk(5.6), 0.365 + 0.220/5.6, 1e-14);
     EXPECT_TRUE(std::isnan(corr::mueller(0.5, 2.5)));
+
+    // Not evaluated at and near the pole of a at N = 3.156 (exactly there
+    // it divided by zero)
+    EXPECT_FALSE(corr::muellerApplies(3.156));
+    EXPECT_FALSE(corr::muellerApplies(3.2));
+    EXPECT_TRUE(std::isnan(corr::mueller(0.5, 3.156)));
+    EXPECT_TRUE(corr::muellerApplies(3.3));
+    EXPECT_TRUE(corr::muellerApplies(2.61));
+    EXPECT_FALSE(corr::muellerApplies(2.6));
 }
 
 TEST(correlations, deKlerkFirstMinimum)

@@ -135,7 +135,27 @@ TEST(bedCaseSettingsDeath, rejectsBadValues)
     (
         make("cellsPerDiameter 1;"),
         ::testing::ExitedWithCode(1),
-        "cellsPerDiameter(.|\n)*a whole number >= 2"
+        "cellsPerDiameter(.|\n)*a whole number in \\[2, 64\\]"
+    );
+    // Upper bounds: the grid and tube.stl grow with both (wallLevel 30
+    // overflowed the tube's facet count and stopped the run)
+    EXPECT_EXIT
+    (
+        make("cellsPerDiameter 100000;"),
+        ::testing::ExitedWithCode(1),
+        "cellsPerDiameter 100000(.|\n)*\\[2, 64\\]"
+    );
+    EXPECT_EXIT
+    (
+        make("wallLevel 30;"),
+        ::testing::ExitedWithCode(1),
+        "wallLevel 30(.|\n)*\\[0, 4\\]"
+    );
+    EXPECT_EXIT
+    (
+        make("pelletLevel 9;"),
+        ::testing::ExitedWithCode(1),
+        "pelletLevel 9(.|\n)*\\[0, 5\\]"
     );
     EXPECT_EXIT
     (

@@ -198,3 +198,28 @@ TEST(energy, noDampingInFreeFlightWithSpin)
     s().advance(2);
     EXPECT_NEAR(s().kineticEnergy(), E0, 1e-12*E0);
 }
+
+
+TEST(worldDeath, aCollapsedStepStopsTheRunInsteadOfHanging)
+{
+    // The overlap correction leaves interpenetrations up to the contact
+    // tolerance (here 1e-6 m) that a band of 5e-7 m cannot hold: the step
+    // collapsed to 1e-18 s and rbdPackBed hung without a word (packedBed
+    // now refuses such settings; the engine stops by itself as well)
+    EXPECT_EXIT
+    (
+        {
+            sphereScene s
+            (
+                0.03, d, 0.1, 0.9, 0.6, 0.6,
+                "proximity 1e-4; contactTolerance 1e-4;"
+            );
+            s().addBody(point(0, 0, 0.02), quaternion(1));
+            s().addBody(point(0.001, 0, 0.035), quaternion(1));
+            s().addBody(point(-0.001, 0.001, 0.05), quaternion(1));
+            s().advance(2);
+        },
+        ::testing::ExitedWithCode(1),
+        "time step stayed below"
+    );
+}
