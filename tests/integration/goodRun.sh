@@ -65,5 +65,7 @@ check "-dict reads another dictionary" "[ \$? -eq 0 ] && cmp -s $out/pellets.csv
 
 rbdPackBed -help > "$tmp/help.log" 2>&1
 check "-help lists -dict and -case" "grep -q -- '-dict' $tmp/help.log && grep -q -- '-case' $tmp/help.log"
+check "-help names the dictionary, the outputs and an example" \
+    "grep -q 'system/packingDict' $tmp/help.log && grep -q 'pellets.stl' $tmp/help.log && grep -q 'Example:' $tmp/help.log"
 
 exit $fail

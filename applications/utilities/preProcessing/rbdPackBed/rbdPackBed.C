@@ -53,7 +53,19 @@ int main(int argc, char *argv[])
     argList::addNote
     (
         "Pack a random bed of pellets in a tube by hard-body rigid body"
-        " dynamics and write it for snappyHexMesh"
+        " dynamics and write it for snappyHexMesh.\n"
+        "Reads system/packingDict (blocks container, pellets, loading,"
+        " simulation, analysis, cfdCase; commented examples in"
+        " tutorials/*/system/packingDict). Every entry is checked before"
+        " the run; the effective settings, defaults included, are echoed"
+        " at the start of the log.\n"
+        "Writes constant/triSurface/pellets.stl, in postProcessing/"
+        "rbdPackBed/ the summary, pellets.csv, radialPorosity.dat and"
+        " axialPorosity.dat, and the CFD case (blockMesh, surfaceFeatureExtract,"
+        " snappyHexMesh, simpleFoam).\n"
+        "Example: rbdPackBed -case tutorials/spheres  (then blockMesh,"
+        " surfaceFeatureExtract, snappyHexMesh -overwrite, simpleFoam;"
+        " see the tutorial's Allrun)"
     );
     argList::noParallel();
     argList::noFunctionObjects();

@@ -91,6 +91,13 @@ Foam::rbd::loadingScheme::loadingScheme
         );
     }
 
+    if (scheme_ == "column" && dict.found("columnOffset"))
+    {
+        WarningInFunction
+            << "columnOffset in " << dict.name() << " is ignored: the "
+            << "column scheme releases on the tube axis" << endl;
+    }
+
     const scalar s = columnOffset_;
     const scalar z = releaseHeight_;
     if (scheme_ == "column")

@@ -33,6 +33,12 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
     inertia_(Zero)
 {
     checkEntries(dict, {"file", "scale"});
+    if (dict.found("faces"))
+    {
+        WarningInFunction
+            << "faces in " << dict.name() << " is ignored for an stl "
+            << "pellet: its mesh is the file's" << endl;
+    }
 
     // Relative paths are relative to the case directory
     fileName path(file_);

@@ -145,6 +145,26 @@ Foam::rbd::simulationControls::simulationControls
     known.append(lcpSolver::coeffsNames());
     checkKnownEntries(given, known);
 
+    // Coefficients of a solver that is not selected have no effect: say so
+    // (they are not checked, and an edit there would be lost silently)
+    {
+        const word selected
+        (
+            d.getOrDefault<word>("lcpSolver", "blockPivoting") + "Coeffs"
+        );
+        for (const word& c : lcpSolver::coeffsNames())
+        {
+            if (c != selected && given.found(c, keyType::LITERAL))
+            {
+                WarningInFunction
+                    << c << " in " << given.name() << " is ignored: "
+                    << "lcpSolver is "
+                    << d.getOrDefault<word>("lcpSolver", "blockPivoting")
+                    << endl;
+            }
+        }
+    }
+
     if (proximity > 1)
     {
         badEntry(d, "proximity", proximity, "a number in (0, 1] [-]");
