@@ -24,6 +24,10 @@ const Foam::scalar Foam::rbd::packedBed::minBodyRatio = 0.05;
 
 const Foam::scalar Foam::rbd::packedBed::maxBlockCells = 5e7;
 
+const Foam::scalar Foam::rbd::packedBed::densestPorosity = 0.26;
+
+const Foam::scalar Foam::rbd::packedBed::loosestPorosity = 0.95;
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -61,30 +65,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     const dictionary& pelletsDict = dict.subDict("pellets");
     const pelletShape& shape = shape_();
 
-    // A misspelt block (loadng { ... }) would be ignored and its defaults
-    // taken silently. Plain entries at the top level stay allowed: they
-    // are the variables of $macros.
-    {
-        const wordList blocks
-        ({
-            "FoamFile", "container", "pellets", "loading", "simulation",
-            "analysis", "cfdCase"
-        });
-        for (const entry& e : dict)
-        {
-            if (e.isDict() && !blocks.found(e.keyword()))
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Unknown block '" << e.keyword() << "' in "
-                    << dict.name() << nl << "    allowed:";
-                for (const word& b : blocks)
-                {
-                    FatalIOError<< ' ' << b;
-                }
-                FatalIOError<< exit(FatalIOError);
-            }
-        }
-    }
+    checkBlocks(dict);
 
     // The tube must take a pellet in any orientation
     const scalar rb = shape.boundingRadius();
@@ -99,79 +80,9 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         );
     }
 
-    // Pellets the engine's tolerances are made for (its lengths are
-    // relative to the pellet, but round-off is not), and pellets with a
-    // body: a wall, a coin, a needle or a sliver much thinner than the
-    // pellet is wide has a volume-equivalent diameter dpv far below its
-    // size, and the CFD grid (cellsPerDiameter per dpv) would be sized to
-    // the sliver (a 1e-9 m high tetrahedron asked for a 1.6 GB tube.stl)
-    if (!(2*rb >= minPelletSize && 2*rb <= maxPelletSize))
-    {
-        FatalIOErrorInFunction(pelletsDict)
-            << "Bad pellet size in " << pelletsDict.name() << nl
-            << "    pellets of shape " << shape.type() << " with a bounding "
-            << "diameter of " << 2*rb << " m; allowed: " << minPelletSize
-            << " to " << maxPelletSize << " m" << nl
-            << exit(FatalIOError);
-    }
-    const scalar dpv = shape.volumeEquivalentDiameter();
-    if (!(dpv >= minBodyRatio*2*rb))
-    {
-        FatalIOErrorInFunction(pelletsDict)
-            << "Bad pellet shape in " << pelletsDict.name() << nl
-            << "    pellets of shape " << shape.type() << " with a volume-"
-            << "equivalent diameter of " << dpv << " m, " << dpv/(2*rb)
-            << " of their bounding diameter " << 2*rb << " m: a wall, a "
-            << "coin, a needle or a sliver this thin" << nl
-            << "    allowed: a volume-equivalent diameter at least "
-            << minBodyRatio << " of the bounding diameter" << nl
-            << exit(FatalIOError);
-    }
+    checkPelletSize(pelletsDict);
 
-    // The overlap correction leaves interpenetrations of contactTolerance
-    // dp; the proximity band must hold them with room to spare, or the
-    // step that keeps contacts within the band collapses (1e-18 s seen
-    // with the tolerance twice the band: a hang, not an error)
-    {
-        const scalar slop = controls_.contactTolerance*shape.diameter();
-        const scalar band = controls_.proximity*rb;
-        if (slop > 0.25*band)
-        {
-            badEntry
-            (
-                controls_.dict, "contactTolerance",
-                controls_.contactTolerance,
-                "a tolerance of at most a quarter of the proximity band: "
-                "contactTolerance dp <= proximity r_b/4, here <= "
-              + Foam::name(0.25*band/shape.diameter()) + " (proximity "
-              + Foam::name(controls_.proximity) + ", r_b "
-              + Foam::name(rb) + " m, dp " + Foam::name(shape.diameter())
-              + " m)"
-            );
-        }
-    }
-
-    // A packing needs gravity (the engine alone may run without: free
-    // flight in the tests)
-    if (!(controls_.gravity > 0))
-    {
-        badEntry
-        (
-            controls_.dict, "gravity", controls_.gravity,
-            "a number > 0 [m/s^2] (pellets must fall to pack)"
-        );
-    }
-
-    // The enumeration solver is a test reference (at most 16 contacts)
-    if (controls_.dict.getOrDefault<word>("lcpSolver", "") == "enumeration")
-    {
-        badEntry
-        (
-            controls_.dict, "lcpSolver", word("enumeration"),
-            "blockPivoting | baraff | projectedGaussSeidel (enumeration is "
-            "the tests' reference, limited to 16 contacts)"
-        );
-    }
+    checkControls();
 
     const dictionary loadingDict(subDictOrEmpty(dict, "loading"));
     loading_.reset(new loadingScheme(loadingDict, tube_, shape));
@@ -180,8 +91,8 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     // estimated by Benyahia and O'Neill's correlation for any shape, kept
     // within [densest, loosest]: outside its range (very thin rings, N
     // below 2) the correlation gives porosities near or above 1
-    const scalar densest = 0.26;
-    const scalar loosest = 0.95;
+    const scalar densest = densestPorosity;
+    const scalar loosest = loosestPorosity;
     const scalar R = tube_.radius();
     const scalar N = tube_.diameter()/shape.volumeEquivalentDiameter();
     const scalar epsEstimate = min
@@ -226,56 +137,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         );
     }
 
-    // The pellets must fit below the release points: for certain if they
-    // cannot even at the densest porosity, probably if they cannot at the
-    // estimate (then the run stops releasing when the bed reaches the
-    // release height, and the summary says how many it holds)
-    const scalar solidHeight = number_*shape.volume()/(pi*sqr(R));
-    if (solidHeight/(1 - densest) > release)
-    {
-        FatalIOErrorInFunction(containerDict)
-            << "Bad entry 'height " << tube_.height() << ";' in "
-            << containerDict.name() << nl
-            << "    " << number_ << " pellets fill at least "
-            << solidHeight/(1 - densest) << " m of this tube (porosity "
-            << densest << "), about " << solidHeight/(1 - epsEstimate)
-            << " m (porosity " << epsEstimate << " by Benyahia and "
-            << "O'Neill); they are released from " << release << " m"
-            << nl << "    allowed: a taller container (or releaseHeight), "
-            << "or fewer pellets" << nl
-            << exit(FatalIOError);
-    }
-    if (solidHeight/(1 - epsEstimate) > release)
-    {
-        WarningInFunction
-            << number_ << " pellets fill about "
-            << solidHeight/(1 - epsEstimate) << " m of this tube (porosity "
-            << epsEstimate << " by Benyahia and O'Neill), more than the "
-            << release << " m below the release points: the bed may reach "
-            << "them first, and the run then stops releasing" << nl << endl;
-    }
-
-    // A column releases its next pellet once the last one is the
-    // clearance (spacing) away from the release point: a pellet lying on
-    // the floor must be that far below it, or a second is never released
-    const scalar spacingUnit = max(shape.diameter(), 2*rb);
-    if
-    (
-        number_ > loading_->nColumns()
-     && loading_->releaseHeight() - rb < loading_->clearance()
-    )
-    {
-        badEntry
-        (
-            loadingDict, "spacing", loading_->clearance()/spacingUnit,
-            "a spacing the release height allows: a pellet lying on the "
-            "floor must be spacing x " + Foam::name(spacingUnit)
-          + " m below the release point, here at most "
-          + Foam::name((loading_->releaseHeight() - rb)/spacingUnit)
-          + " (releaseHeight " + Foam::name(loading_->releaseHeight())
-          + " m; or a taller container)"
-        );
-    }
+    checkFilling(containerDict, loadingDict, epsEstimate);
 
     // Safety net that fits the loading (the default 30 s stopped a bed of
     // 1000 spheres in one column with 606 released)
@@ -330,27 +192,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         )
     );
 
-    // The CFD case's background grid for a bed as high as the tube, the
-    // most it can be: checked now, not after the packing
-    {
-        bedCaseSettings tallest(caseSettings_());
-        tallest.setBedHeight(tube_.height());
-        const labelVector& n = tallest.blockCells();
-        const scalar cells = scalar(n.x())*n.y()*n.z();
-        if (cells > maxBlockCells)
-        {
-            FatalIOErrorInFunction(dict)
-                << "The CFD case of " << dict.name() << " is too fine: "
-                << "a background grid of " << n << " cells (cfdCase/"
-                << "cellsPerDiameter " << tallest.cellsPerDiameter()
-                << " per volume-equivalent diameter " << dpv << " m, "
-                << "a bed up to " << tube_.height() << " m high)" << nl
-                << "    allowed: at most " << maxBlockCells << " cells; "
-                << "lower cellsPerDiameter" << nl
-                << exit(FatalIOError);
-        }
-    }
-
+    checkCfdGrid(dict);
     checkOutputDirectories();
 
     world_.reset
@@ -434,6 +276,219 @@ Foam::label Foam::rbd::packedBed::releasePellets
     }
 
     return released;
+}
+
+
+void Foam::rbd::packedBed::checkBlocks(const dictionary& dict)
+{
+    // A misspelt block (loadng { ... }) would be ignored and its defaults
+    // taken silently. Plain entries at the top level stay allowed: they
+    // are the variables of $macros.
+    {
+        const wordList blocks
+        ({
+            "FoamFile", "container", "pellets", "loading", "simulation",
+            "analysis", "cfdCase"
+        });
+        for (const entry& e : dict)
+        {
+            if (e.isDict() && !blocks.found(e.keyword()))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Unknown block '" << e.keyword() << "' in "
+                    << dict.name() << nl << "    allowed:";
+                for (const word& b : blocks)
+                {
+                    FatalIOError<< ' ' << b;
+                }
+                FatalIOError<< exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::rbd::packedBed::checkPelletSize
+(
+    const dictionary& pelletsDict
+) const
+{
+    const pelletShape& shape = shape_();
+    const scalar rb = shape.boundingRadius();
+
+    // Pellets the engine's tolerances are made for (its lengths are
+    // relative to the pellet, but round-off is not), and pellets with a
+    // body: a wall, a coin, a needle or a sliver much thinner than the
+    // pellet is wide has a volume-equivalent diameter dpv far below its
+    // size, and the CFD grid (cellsPerDiameter per dpv) would be sized to
+    // the sliver (a 1e-9 m high tetrahedron asked for a 1.6 GB tube.stl)
+    if (!(2*rb >= minPelletSize && 2*rb <= maxPelletSize))
+    {
+        FatalIOErrorInFunction(pelletsDict)
+            << "Bad pellet size in " << pelletsDict.name() << nl
+            << "    pellets of shape " << shape.type() << " with a bounding "
+            << "diameter of " << 2*rb << " m; allowed: " << minPelletSize
+            << " to " << maxPelletSize << " m" << nl
+            << exit(FatalIOError);
+    }
+    const scalar dpv = shape.volumeEquivalentDiameter();
+    if (!(dpv >= minBodyRatio*2*rb))
+    {
+        FatalIOErrorInFunction(pelletsDict)
+            << "Bad pellet shape in " << pelletsDict.name() << nl
+            << "    pellets of shape " << shape.type() << " with a volume-"
+            << "equivalent diameter of " << dpv << " m, " << dpv/(2*rb)
+            << " of their bounding diameter " << 2*rb << " m: a wall, a "
+            << "coin, a needle or a sliver this thin" << nl
+            << "    allowed: a volume-equivalent diameter at least "
+            << minBodyRatio << " of the bounding diameter" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::rbd::packedBed::checkControls() const
+{
+    const pelletShape& shape = shape_();
+    const scalar rb = shape.boundingRadius();
+
+    // The overlap correction leaves interpenetrations of contactTolerance
+    // dp; the proximity band must hold them with room to spare, or the
+    // step that keeps contacts within the band collapses (1e-18 s seen
+    // with the tolerance twice the band: a hang, not an error)
+    {
+        const scalar slop = controls_.contactTolerance*shape.diameter();
+        const scalar band = controls_.proximity*rb;
+        if (slop > 0.25*band)
+        {
+            badEntry
+            (
+                controls_.dict, "contactTolerance",
+                controls_.contactTolerance,
+                "a tolerance of at most a quarter of the proximity band: "
+                "contactTolerance dp <= proximity r_b/4, here <= "
+              + Foam::name(0.25*band/shape.diameter()) + " (proximity "
+              + Foam::name(controls_.proximity) + ", r_b "
+              + Foam::name(rb) + " m, dp " + Foam::name(shape.diameter())
+              + " m)"
+            );
+        }
+    }
+
+    // A packing needs gravity (the engine alone may run without: free
+    // flight in the tests)
+    if (!(controls_.gravity > 0))
+    {
+        badEntry
+        (
+            controls_.dict, "gravity", controls_.gravity,
+            "a number > 0 [m/s^2] (pellets must fall to pack)"
+        );
+    }
+
+    // The enumeration solver is a test reference (at most 16 contacts)
+    if (controls_.dict.getOrDefault<word>("lcpSolver", "") == "enumeration")
+    {
+        badEntry
+        (
+            controls_.dict, "lcpSolver", word("enumeration"),
+            "blockPivoting | baraff | projectedGaussSeidel (enumeration is "
+            "the tests' reference, limited to 16 contacts)"
+        );
+    }
+}
+
+
+void Foam::rbd::packedBed::checkFilling
+(
+    const dictionary& containerDict,
+    const dictionary& loadingDict,
+    const scalar epsEstimate
+) const
+{
+    const pelletShape& shape = shape_();
+    const scalar rb = shape.boundingRadius();
+    const scalar R = tube_.radius();
+    const scalar densest = densestPorosity;
+    const scalar release = loading_->releaseHeight() - rb;
+
+    // The pellets must fit below the release points: for certain if they
+    // cannot even at the densest porosity, probably if they cannot at the
+    // estimate (then the run stops releasing when the bed reaches the
+    // release height, and the summary says how many it holds)
+    const scalar solidHeight = number_*shape.volume()/(pi*sqr(R));
+    if (solidHeight/(1 - densest) > release)
+    {
+        FatalIOErrorInFunction(containerDict)
+            << "Bad entry 'height " << tube_.height() << ";' in "
+            << containerDict.name() << nl
+            << "    " << number_ << " pellets fill at least "
+            << solidHeight/(1 - densest) << " m of this tube (porosity "
+            << densest << "), about " << solidHeight/(1 - epsEstimate)
+            << " m (porosity " << epsEstimate << " by Benyahia and "
+            << "O'Neill); they are released from " << release << " m"
+            << nl << "    allowed: a taller container (or releaseHeight), "
+            << "or fewer pellets" << nl
+            << exit(FatalIOError);
+    }
+    if (solidHeight/(1 - epsEstimate) > release)
+    {
+        WarningInFunction
+            << number_ << " pellets fill about "
+            << solidHeight/(1 - epsEstimate) << " m of this tube (porosity "
+            << epsEstimate << " by Benyahia and O'Neill), more than the "
+            << release << " m below the release points: the bed may reach "
+            << "them first, and the run then stops releasing" << nl << endl;
+    }
+
+    // A column releases its next pellet once the last one is the
+    // clearance (spacing) away from the release point: a pellet lying on
+    // the floor must be that far below it, or a second is never released
+    const scalar spacingUnit = max(shape.diameter(), 2*rb);
+    if
+    (
+        number_ > loading_->nColumns()
+     && loading_->releaseHeight() - rb < loading_->clearance()
+    )
+    {
+        badEntry
+        (
+            loadingDict, "spacing", loading_->clearance()/spacingUnit,
+            "a spacing the release height allows: a pellet lying on the "
+            "floor must be spacing x " + Foam::name(spacingUnit)
+          + " m below the release point, here at most "
+          + Foam::name((loading_->releaseHeight() - rb)/spacingUnit)
+          + " (releaseHeight " + Foam::name(loading_->releaseHeight())
+          + " m; or a taller container)"
+        );
+    }
+}
+
+
+void Foam::rbd::packedBed::checkCfdGrid(const dictionary& dict) const
+{
+    const scalar dpv = shape_->volumeEquivalentDiameter();
+
+    // The CFD case's background grid for a bed as high as the tube, the
+    // most it can be: checked now, not after the packing
+    {
+        bedCaseSettings tallest(caseSettings_());
+        tallest.setBedHeight(tube_.height());
+        const labelVector& n = tallest.blockCells();
+        const scalar cells = scalar(n.x())*n.y()*n.z();
+        if (cells > maxBlockCells)
+        {
+            FatalIOErrorInFunction(dict)
+                << "The CFD case of " << dict.name() << " is too fine: "
+                << "a background grid of " << n << " cells (cfdCase/"
+                << "cellsPerDiameter " << tallest.cellsPerDiameter()
+                << " per volume-equivalent diameter " << dpv << " m, "
+                << "a bed up to " << tube_.height() << " m high)" << nl
+                << "    allowed: at most " << maxBlockCells << " cells; "
+                << "lower cellsPerDiameter" << nl
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
