@@ -610,8 +610,13 @@ bool Foam::rbd::cgalMeshTools::readSTL
         is.seekg(0, std::ios::end);
         const std::streamoff size = is.tellg();
         std::uint32_t n = 0;
-        if (size >= 84 && is.seekg(80) && is.read(reinterpret_cast<char*>(&n), 4)
-         && size == 84 + 50*std::streamoff(n))
+        if
+        (
+            size >= 84
+         && is.seekg(80)
+         && is.read(reinterpret_cast<char*>(&n), 4)
+         && size == 84 + 50*std::streamoff(n)
+        )
         {
             for (std::uint32_t t = 0; t < n; ++t)
             {
