@@ -387,7 +387,7 @@ void Foam::rbd::packedBed::checkControls() const
     }
 
     // The enumeration solver is a test reference (at most 16 contacts)
-    if (controls_.dict.getOrDefault<word>("lcpSolver", "") == "enumeration")
+    if (lcpSolver::selectedType(controls_.dict) == "enumeration")
     {
         badEntry
         (
@@ -851,28 +851,23 @@ void Foam::rbd::packedBed::write() const
     caseSettings.setBedHeight(bedHeight());
 
     // The one check of the CFD case that needs the bed, made before
-    // anything is written
+    // anything is written; its point is the one the case writer uses
+    const bedCaseWriter::insideFunction inside
+    (
+        insidePellet(caseSettings.pelletScale())
+    );
+    point location;
+    if (!bedCaseWriter::findLocationInMesh(caseSettings, inside, location))
     {
-        point location;
-        if
-        (
-           !bedCaseWriter::findLocationInMesh
-            (
-                caseSettings, insidePellet(caseSettings.pelletScale()),
-                location
-            )
-        )
-        {
-            FatalErrorInFunction
-                << "Bad entry 'cellsPerDiameter "
-                << caseSettings.cellsPerDiameter() << ";' in "
-                << fileName(dictName_ + ".cfdCase") << nl
-                << "    no point of the background grid is in the fluid for "
-                << "snappyHexMesh's locationInMesh (every cell is within one "
-                << "cell of a pellet or two of the tube wall); allowed: a "
-                << "finer grid, more cells per diameter. Nothing written."
-                << nl << exit(FatalError);
-        }
+        FatalErrorInFunction
+            << "Bad entry 'cellsPerDiameter "
+            << caseSettings.cellsPerDiameter() << ";' in "
+            << fileName(dictName_ + ".cfdCase") << nl
+            << "    no point of the background grid is in the fluid for "
+            << "snappyHexMesh's locationInMesh (every cell is within one "
+            << "cell of a pellet or two of the tube wall); allowed: a "
+            << "finer grid, more cells per diameter. Nothing written."
+            << nl << exit(FatalError);
     }
 
     bedOutput out(runTime_.path(), tube_, shape, w.bodies());
@@ -970,13 +965,8 @@ void Foam::rbd::packedBed::write() const
     }
 
     // The CFD case around the bed
-    bedCaseWriter writer
-    (
-        runTime_.path(),
-        caseSettings,
-        insidePellet(caseSettings.pelletScale())
-    );
-    const fileNameList kept = writer.write();
+    const bedCaseWriter writer(runTime_.path(), caseSettings, inside);
+    const fileNameList kept = writer.write(location);
 
     Info<< "CFD case (simpleFoam, laminar):" << nl;
     caseSettings.write(Info);

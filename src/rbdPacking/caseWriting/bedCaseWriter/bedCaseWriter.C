@@ -846,7 +846,15 @@ Foam::fileNameList Foam::rbd::bedCaseWriter::write() const
             << "    increase cellsPerDiameter (now "
             << settings_.cellsPerDiameter() << ")" << exit(FatalError);
     }
+    return write(location);
+}
 
+
+Foam::fileNameList Foam::rbd::bedCaseWriter::write
+(
+    const point& location
+) const
+{
     const string note
     (
         "Written by rbdPacking (bedCaseWriter) for a bed of dp = "

@@ -711,26 +711,16 @@ void Foam::rbd::meshContacts::meshMesh
             const point ci((R & ni.centre) + t);
 
             // Edges of i near k's leaf box, edges of k near i's leaf sphere
+            segmentBox grownLeafK;
+            grownLeafK.lo = nk.lo - vector::uniform(halfBand);
+            grownLeafK.hi = nk.hi + vector::uniform(halfBand);
             edgesI.clear();
             for (const label ei : bvh_.leafEdges(li))
             {
                 const bodyBVH::edgeInfo& e = es[ei];
                 segmentBox sb(grownBox(moved(e.a, R, t), moved(e.b, R, t)));
                 sb.edge = ei;
-                bool near = true;
-                for (direction j = 0; j < 3; ++j)
-                {
-                    if
-                    (
-                        sb.lo[j] > nk.hi[j] + halfBand
-                     || sb.hi[j] < nk.lo[j] - halfBand
-                    )
-                    {
-                        near = false;
-                        break;
-                    }
-                }
-                if (near)
+                if (!apart(sb, grownLeafK))
                 {
                     edgesI.push_back(sb);
                 }

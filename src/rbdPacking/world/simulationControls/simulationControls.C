@@ -148,19 +148,14 @@ Foam::rbd::simulationControls::simulationControls
     // Coefficients of a solver that is not selected have no effect: say so
     // (they are not checked, and an edit there would be lost silently)
     {
-        const word selected
-        (
-            d.getOrDefault<word>("lcpSolver", "blockPivoting") + "Coeffs"
-        );
+        const word selected(lcpSolver::selectedType(d));
         for (const word& c : lcpSolver::coeffsNames())
         {
-            if (c != selected && given.found(c, keyType::LITERAL))
+            if (c != selected + "Coeffs" && given.found(c, keyType::LITERAL))
             {
                 WarningInFunction
                     << c << " in " << given.name() << " is ignored: "
-                    << "lcpSolver is "
-                    << d.getOrDefault<word>("lcpSolver", "blockPivoting")
-                    << endl;
+                    << "lcpSolver is " << selected << endl;
             }
         }
     }

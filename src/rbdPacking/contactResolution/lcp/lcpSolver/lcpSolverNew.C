@@ -13,7 +13,7 @@ Foam::autoPtr<Foam::rbd::lcpSolver> Foam::rbd::lcpSolver::New
     const dictionary& dict
 )
 {
-    const word solverType(dict.getOrDefault<word>("lcpSolver", "blockPivoting"));
+    const word solverType(selectedType(dict));
 
     Info<< "Selecting LCP solver " << solverType << endl;
 
@@ -34,6 +34,12 @@ Foam::autoPtr<Foam::rbd::lcpSolver> Foam::rbd::lcpSolver::New
     (
         cstrIter()(subDictOrEmpty(dict, solverType + "Coeffs"))
     );
+}
+
+
+Foam::word Foam::rbd::lcpSolver::selectedType(const dictionary& dict)
+{
+    return dict.getOrDefault<word>("lcpSolver", "blockPivoting");
 }
 
 
