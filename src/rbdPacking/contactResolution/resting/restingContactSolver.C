@@ -178,6 +178,9 @@ Foam::rbd::restingContactSolver::solve
 
     std::vector<row> rowsI, rowsK;
     std::vector<std::vector<std::pair<label, bool>>> bodyRows(bodies.size());
+    std::vector<label> bodyColumn(bodies.size(), -1);
+    std::vector<Eigen::Triplet<double>> gTriplets;
+    lcpFactors factors;
     std::vector<Eigen::Triplet<double>> triplets;
     std::vector<bool> guess;
 
@@ -271,6 +274,68 @@ Foam::rbd::restingContactSolver::solve
             A.coeffRef(a, a) += shift(a);
         }
 
+        // A = G G^T + diag(shift), G = J W^1/2 (lcpFactors), where it has
+        // fewer columns (6 per moving body) than rows: a heap of mesh
+        // pellets, whose LCP the solver can then work on in body space
+        const label d = 6*label(touched.size());
+        factors.G.resize(0, 0);
+        if (d < n)
+        {
+            // Per body: its first column, and L with L L^T = I^-1 (world
+            // frame; zero for a body that does not rotate)
+            std::vector<Eigen::Matrix3d> sqrtInvInertia(touched.size());
+            for (size_t t = 0; t < touched.size(); ++t)
+            {
+                const rigidBody& bd = bodies[touched[t]];
+                bodyColumn[touched[t]] = 6*label(t);
+                Eigen::Matrix3d W(Eigen::Matrix3d::Zero());
+                if (bd.rotates())
+                {
+                    for (direction r = 0; r < 3; ++r)
+                    {
+                        for (direction c = 0; c < 3; ++c)
+                        {
+                            W(r, c) = bd.invInertia()(r, c);
+                        }
+                    }
+                    W = W.llt().matrixL();
+                }
+                sqrtInvInertia[t] = W;
+            }
+            gTriplets.clear();
+            auto addG = [&](const label a, const label body, const row& R)
+            {
+                const label col = bodyColumn[body];
+                const scalar sqrtInvMass = Foam::sqrt(bodies[body].invMass());
+                const Eigen::Vector3d g
+                (
+                    sqrtInvInertia[col/6].transpose()
+                   *Eigen::Vector3d(R.ang.x(), R.ang.y(), R.ang.z())
+                );
+                for (direction k = 0; k < 3; ++k)
+                {
+                    gTriplets.emplace_back(a, col + k, sqrtInvMass*R.lin[k]);
+                    gTriplets.emplace_back(a, col + 3 + k, g(k));
+                }
+            };
+            for (label a = 0; a < n; ++a)
+            {
+                const contact& c = contacts[cs[a]];
+                addG(a, c.i, rowsI[a]);
+                if (c.k >= 0 && !fixed[c.k])
+                {
+                    addG(a, c.k, rowsK[a]);
+                }
+            }
+            factors.G.resize(n, d);
+            factors.G.setFromTriplets(gTriplets.begin(), gTriplets.end());
+            factors.s = shift;
+            for (const label body : touched)
+            {
+                bodyColumn[body] = -1;
+            }
+        }
+
         // B: d'' without contact forces (eq 28), plus the step term
         Eigen::VectorXd B(n);
         for (label a = 0; a < n; ++a)
@@ -322,7 +387,7 @@ Foam::rbd::restingContactSolver::solve
         }
 
         phi.resize(n);
-        const lcpResult lr = solver_->solve(A, B, guess, phi);
+        const lcpResult lr = solver_->solve(A, factors, B, guess, phi);
         res.iterations += lr.iterations;
         res.converged = res.converged && lr.converged;
         res.maxViolation = max(res.maxViolation, lr.maxViolation);

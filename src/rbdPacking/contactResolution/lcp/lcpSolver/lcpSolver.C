@@ -43,6 +43,19 @@ Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
 }
 
 
+Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
+(
+    const Eigen::SparseMatrix<double>& A,
+    const lcpFactors&,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    Eigen::VectorXd& f
+) const
+{
+    return solve(A, b, guess, f);
+}
+
+
 Foam::scalar Foam::rbd::lcpSolver::violation
 (
     const Eigen::MatrixXd& A,

@@ -4,7 +4,8 @@
 // random regular, singular and pellet-scale problems; two degenerate
 // islands recorded from a bed, where the block exchanges cycle; the guess
 // changes the work, not the answer; sparse and dense input agree; the
-// fallback to baraff and the report of a capped solve
+// fallback to baraff and the report of a capped solve; A given with its
+// factors (body space) against enumeration and against contact space
 
 #include <gtest/gtest.h>
 #include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
@@ -36,7 +37,8 @@ namespace
         const problem& p,
         const std::vector<bool>& guess,
         const double wTol,
-        const std::string& what
+        const std::string& what,
+        const rbd::lcpFactors& factors = rbd::lcpFactors()
     )
     {
         const rbd::enumerationLCP reference(dictionary::null);
@@ -46,7 +48,7 @@ namespace
 
         Vec f;
         const rbd::lcpResult r =
-            solver.solve(p.A.sparseView(), p.b, guess, f);
+            solver.solve(p.A.sparseView(), factors, p.b, guess, f);
         EXPECT_TRUE(r.converged) << what << ": " << r.maxViolation;
         EXPECT_TRUE(f.allFinite()) << what;
         EXPECT_GE(f.minCoeff(), 0) << what;
@@ -134,6 +136,83 @@ TEST(blockPivotingLCP, interiorPointMatchesEnumeration)
     // The interior point did the work in most of them (58 of 120 when
     // written)
     EXPECT_GT(handedOver, 40);
+}
+
+
+TEST(blockPivotingLCP, bodySpaceMatchesEnumeration)
+{
+    // Two bodies, 13-15 contacts (d = 12 < n): the block exchanges and the
+    // interior point work in body space; compliant (unique f) and exact
+    // (singular A, redundant contacts) problems
+    const rbd::blockPivotingLCP solver(parse(noBaraffDict));
+    const rbd::blockPivotingLCP interior(parse(interiorDict));
+    rng gen(404);
+    for (int trial = 0; trial < 60; ++trial)
+    {
+        const double c = trial % 2 ? 1e-4 : 0;
+        const heap hp = randomHeap(gen, 2, uniformInt(gen, 13, 15), c);
+        const std::string what =
+            "trial " + std::to_string(trial) + " c " + std::to_string(c);
+        compareWithEnumeration
+        (
+            solver, hp.p, {}, 1e-7, what, hp.factors
+        );
+        compareWithEnumeration
+        (
+            interior, hp.p, {}, 1e-6, "interior point, " + what, hp.factors
+        );
+    }
+}
+
+
+TEST(blockPivotingLCP, bodySpaceAgreesWithContactSpace)
+{
+    // Heaps of 2-6 bodies with 7-12 contacts per body: the solve with the
+    // factors (body space) and without (contact space) meet the tolerance
+    // and agree in w (unique for PSD A) and, where the compliance makes A
+    // positive definite, in f
+    const rbd::blockPivotingLCP solver(parse(noBaraffDict));
+    rng gen(505);
+    const double compliances[] = {0, 1e-5, 1e-3};
+    for (int trial = 0; trial < 60; ++trial)
+    {
+        const double c = compliances[trial % 3];
+        const int k = uniformInt(gen, 2, 6);
+        const heap hp = randomHeap(gen, k, uniformInt(gen, 7*k, 12*k), c);
+        const std::string what =
+            "trial " + std::to_string(trial) + " c " + std::to_string(c);
+        const Eigen::SparseMatrix<double> As(hp.p.A.sparseView());
+        std::vector<bool> guess(hp.p.b.size());
+        for (label i = 0; i < label(guess.size()); ++i)
+        {
+            guess[i] = hp.p.b(i) < 0;
+        }
+
+        Vec fBody, fContact;
+        const rbd::lcpResult rb =
+            solver.solve(As, hp.factors, hp.p.b, guess, fBody);
+        const rbd::lcpResult rc = solver.solve(As, hp.p.b, guess, fContact);
+        EXPECT_TRUE(rb.converged) << what << ": " << rb.maxViolation;
+        EXPECT_TRUE(rc.converged) << what << ": " << rc.maxViolation;
+        EXPECT_LE(rbd::lcpSolver::violation(As, hp.p.b, fBody), 1e-8)
+            << what;
+        EXPECT_GE(fBody.minCoeff(), 0) << what;
+
+        const double scale = wScale(hp.p, fContact);
+        EXPECT_LE
+        (
+            (w(hp.p, fBody) - w(hp.p, fContact)).cwiseAbs().maxCoeff(),
+            1e-7*scale
+        ) << what;
+        if (c > 0)
+        {
+            EXPECT_LE
+            (
+                (fBody - fContact).cwiseAbs().maxCoeff(),
+                1e-6*fContact.cwiseAbs().maxCoeff()
+            ) << what;
+        }
+    }
 }
 
 
