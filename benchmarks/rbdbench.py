@@ -192,6 +192,48 @@ def pelletBed(shape, tubeDiameter, seed=1, fillHeight=None, number=None,
     return d
 
 
+def protrusion(caseDir, D, H, tubeDiameter, tubeHeight, samples=720):
+    """Per pellet of caseDir's pellets.csv, the largest distance [m] by
+    which its exact outer cylinder (diameter D, height H, axis the body z
+    axis; rims sampled at `samples` points) crosses the tube wall, the
+    floor or the tube's top (negative: inside; inf for a NaN pose), as a
+    numpy array. None without pellets.csv."""
+    import numpy as np
+    path = Path(caseDir) / 'postProcessing' / 'rbdPackBed' / 'pellets.csv'
+    if not path.exists():
+        return None
+    data = np.genfromtxt(path, delimiter=',', names=True, dtype=None,
+                         encoding=None)
+    data = np.atleast_1d(data)
+    if data.size == 0:
+        return np.zeros(0)
+    c = np.stack([data['x'], data['y'], data['z']], axis=1).astype(float)
+    q = np.stack([data['qw'], data['qx'], data['qy'], data['qz']],
+                 axis=1).astype(float)
+    bad = ~np.all(np.isfinite(np.hstack([c, q])), axis=1)
+    q /= np.linalg.norm(q, axis=1, keepdims=True)
+    w, x, y, z = q.T
+    # body axes in the world: columns of the rotation matrix
+    u = np.stack([1 - 2 * (y * y + z * z), 2 * (x * y + w * z),
+                  2 * (x * z - w * y)], axis=1)
+    v = np.stack([2 * (x * y - w * z), 1 - 2 * (x * x + z * z),
+                  2 * (y * z + w * x)], axis=1)
+    a = np.stack([2 * (x * z + w * y), 2 * (y * z - w * x),
+                  1 - 2 * (x * x + y * y)], axis=1)
+    theta = np.linspace(0, 2 * np.pi, samples, endpoint=False)
+    rim = (np.cos(theta)[None, :, None] * u[:, None, :]
+           + np.sin(theta)[None, :, None] * v[:, None, :]) * (D / 2)
+    pts = np.concatenate([c[:, None, :] + s * (H / 2) * a[:, None, :] + rim
+                          for s in (-1, 1)], axis=1)
+    radial = (np.sqrt(pts[..., 0]**2 + pts[..., 1]**2).max(axis=1)
+              - tubeDiameter / 2)
+    below = -pts[..., 2].min(axis=1)
+    above = pts[..., 2].max(axis=1) - tubeHeight
+    worst = np.maximum(np.maximum(radial, below), above)
+    worst[bad] = np.inf
+    return worst
+
+
 def applyOverrides(d, overrides):
     """A copy of the nested dict d with overrides {'a/b': value} applied;
     value None removes the entry."""
