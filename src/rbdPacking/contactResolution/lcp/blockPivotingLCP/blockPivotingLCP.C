@@ -32,271 +32,278 @@ namespace rbd
 namespace
 {
     using Foam::label;
-    using Foam::autoPtr;
     typedef Eigen::SparseMatrix<double> sparseMatrix;
     typedef Eigen::SimplicialLDLT
     <
         sparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>
     > sparseLDLT;
-
-    //- Systems (E + G G^T) x = r in body space, for A = G G^T + diag(s)
-    //  given by its factors (lcpFactors, G n x d with d < n), by the
-    //  Woodbury identity (see blockPivotingLCP.H):
-    //      x = E^-1 (r - G y),   (I + G^T E^-1 G) y = G^T E^-1 r
-    //  E^-1 is given per contact; a contact with E^-1 = 0 drops out (its
-    //  x is 0), so the same factorisation serves a block A_FF + E_F of
-    //  the active set F. K = I + G^T E^-1 G keeps one pattern (lower
-    //  triangle), ordered once; its values are summed contact by contact
-    //  into precomputed slots.
-    class bodySpace
-    {
-        const Foam::rbd::lcpFactors& factors_;
-
-        //- G^T: column a holds the row of contact a
-        sparseMatrix Gt_;
-
-        //- K = I + G^T E^-1 G (lower triangle)
-        sparseMatrix K_;
-
-        //- E^-1 of the last factorisation
-        Eigen::VectorXd Einv_;
-
-        //- Per contact a, from slotStart_[a]: the slots of K's values
-        //  that g_p g_q adds to, with the positions (p, q) in G^T's
-        //  values; the slots of K's diagonal
-        std::vector<label> slotStart_;
-        std::vector<label> slots_;
-        std::vector<std::pair<label, label>> pairs_;
-        std::vector<label> diagonalSlots_;
-
-        sparseLDLT ldlt_;
-
-    public:
-
-        //- True if A's factors make body space the smaller system
-        static bool pays
-        (
-            const sparseMatrix& A,
-            const Foam::rbd::lcpFactors& factors
-        )
-        {
-            return
-                factors.valid() && factors.G.rows() == A.rows()
-             && factors.G.cols() < A.rows();
-        }
-
-        explicit bodySpace(const Foam::rbd::lcpFactors& factors)
-        :
-            factors_(factors),
-            Gt_(factors.G.transpose())
-        {
-            Gt_.makeCompressed();
-            const label d = Gt_.rows();
-            const label n = Gt_.cols();
-            const sparseMatrix GtG(Gt_*factors_.G);
-            std::vector<Eigen::Triplet<double>> pattern;
-            for (label j = 0; j < d; ++j)
-            {
-                pattern.emplace_back(j, j, 1.0);
-                for (sparseMatrix::InnerIterator it(GtG, j); it; ++it)
-                {
-                    if (it.row() > j)
-                    {
-                        pattern.emplace_back(it.row(), j, 1.0);
-                    }
-                }
-            }
-            K_.resize(d, d);
-            K_.setFromTriplets(pattern.begin(), pattern.end());
-            K_.makeCompressed();
-
-            // Slot of (row, col) in K's compressed columns
-            const int* outer = K_.outerIndexPtr();
-            const int* inner = K_.innerIndexPtr();
-            auto slot = [&](const label row, const label col)
-            {
-                return label
-                (
-                    std::lower_bound
-                    (
-                        inner + outer[col], inner + outer[col + 1], row
-                    )
-                  - inner
-                );
-            };
-            for (label j = 0; j < d; ++j)
-            {
-                diagonalSlots_.push_back(slot(j, j));
-            }
-            slotStart_.assign(n + 1, 0);
-            const int* gOuter = Gt_.outerIndexPtr();
-            const int* gInner = Gt_.innerIndexPtr();
-            for (label a = 0; a < n; ++a)
-            {
-                slotStart_[a] = slots_.size();
-                for (label p = gOuter[a]; p < gOuter[a + 1]; ++p)
-                {
-                    for (label q = gOuter[a]; q < gOuter[a + 1]; ++q)
-                    {
-                        if (gInner[p] >= gInner[q])
-                        {
-                            slots_.push_back(slot(gInner[p], gInner[q]));
-                            pairs_.emplace_back(p, q);
-                        }
-                    }
-                }
-            }
-            slotStart_[n] = slots_.size();
-            ldlt_.analyzePattern(K_);
-        }
-
-        //- A x = G G^T x + s x
-        Eigen::VectorXd product(const Eigen::VectorXd& x) const
-        {
-            return
-                factors_.G*Eigen::VectorXd(Gt_*x)
-              + factors_.s.cwiseProduct(x);
-        }
-
-        //- Factorise for E^-1 (>= 0 per contact); false if that failed
-        bool factorise(const Eigen::VectorXd& Einv)
-        {
-            Einv_ = Einv;
-            if (!Einv_.allFinite())
-            {
-                return false;
-            }
-            double* k = K_.valuePtr();
-            std::fill(k, k + K_.nonZeros(), 0.0);
-            for (const label slot : diagonalSlots_)
-            {
-                k[slot] = 1;
-            }
-            const double* g = Gt_.valuePtr();
-            for (label a = 0; a + 1 < label(slotStart_.size()); ++a)
-            {
-                const double e = Einv_(a);
-                if (e == 0)
-                {
-                    continue;
-                }
-                for (label i = slotStart_[a]; i < slotStart_[a + 1]; ++i)
-                {
-                    k[slots_[i]] +=
-                        e*g[pairs_[i].first]*g[pairs_[i].second];
-                }
-            }
-            ldlt_.factorize(K_);
-            return ldlt_.info() == Eigen::Success;
-        }
-
-        //- x with (E + G G^T) x = r on the contacts with E^-1 > 0 (0 on
-        //  the others), by the last factorisation
-        Eigen::VectorXd apply(const Eigen::VectorXd& r) const
-        {
-            const Eigen::VectorXd Er(Einv_.cwiseProduct(r));
-            const Eigen::VectorXd y(ldlt_.solve(Gt_*Er));
-            return Er - Einv_.cwiseProduct(factors_.G*y);
-        }
-    };
-
-
-    //- The interior point's Newton matrix A + diag(D), D > 0, factorised
-    //  per step: in body space where that pays (with two steps of
-    //  iterative refinement on A + D itself: E^-1 is large at loaded
-    //  contacts, and r - G y loses digits), else in contact space (the
-    //  pattern of A, ordered and analysed once)
-    class newtonSystem
-    {
-        const sparseMatrix& A_;
-        const Foam::rbd::lcpFactors& factors_;
-        autoPtr<bodySpace> body_;
-
-        //- Contact space: A with its diagonal stored, pointers to it
-        sparseMatrix M_;
-        std::vector<double*> diagonal_;
-        Eigen::VectorXd M0_;
-        sparseLDLT ldlt_;
-
-        //- D of the last factorisation
-        Eigen::VectorXd D_;
-
-    public:
-
-        newtonSystem
-        (
-            const sparseMatrix& A,
-            const Foam::rbd::lcpFactors& factors
-        )
-        :
-            A_(A),
-            factors_(factors)
-        {
-            if (bodySpace::pays(A, factors))
-            {
-                body_.reset(new bodySpace(factors));
-                return;
-            }
-            const label n = A.rows();
-            M_ = A;
-            for (label i = 0; i < n; ++i)
-            {
-                M_.coeffRef(i, i) += 0;
-            }
-            M_.makeCompressed();
-            diagonal_.resize(n);
-            for (label j = 0; j < n; ++j)
-            {
-                for (sparseMatrix::InnerIterator it(M_, j); it; ++it)
-                {
-                    if (it.row() == j)
-                    {
-                        diagonal_[j] = &it.valueRef();
-                    }
-                }
-            }
-            M0_ = M_.diagonal();
-            ldlt_.analyzePattern(M_);
-        }
-
-        //- A x
-        Eigen::VectorXd product(const Eigen::VectorXd& x) const
-        {
-            return body_.valid() ? body_->product(x) : A_*x;
-        }
-
-        //- Factorise A + diag(D); false if that failed
-        bool factorise(const Eigen::VectorXd& D)
-        {
-            D_ = D;
-            if (body_.valid())
-            {
-                return body_->factorise((factors_.s + D).cwiseInverse());
-            }
-            for (label i = 0; i < D.size(); ++i)
-            {
-                *diagonal_[i] = M0_(i) + D(i);
-            }
-            ldlt_.factorize(M_);
-            return ldlt_.info() == Eigen::Success;
-        }
-
-        //- (A + diag(D))^-1 r with the last factorisation
-        Eigen::VectorXd solve(const Eigen::VectorXd& r) const
-        {
-            if (!body_.valid())
-            {
-                return ldlt_.solve(r);
-            }
-            Eigen::VectorXd x(body_->apply(r));
-            for (label refine = 0; refine < 2; ++refine)
-            {
-                x += body_->apply(r - product(x) - D_.cwiseProduct(x));
-            }
-            return x;
-        }
-    };
 }
+
+
+// * * * * * * * * * * * * * * * Private Classes * * * * * * * * * * * * * //
+
+//- Systems (E + G G^T) x = r in body space, for A = G G^T + diag(s)
+//  given by its factors (lcpFactors, G n x d with d < n), by the
+//  Woodbury identity (see blockPivotingLCP.H):
+//      x = E^-1 (r - G y),   (I + G^T E^-1 G) y = G^T E^-1 r
+//  E^-1 is given per contact; a contact with E^-1 = 0 drops out (its
+//  x is 0), so the same factorisation serves a block A_FF + E_F of
+//  the active set F. K = I + G^T E^-1 G keeps one pattern (lower
+//  triangle), ordered once; its values are summed contact by contact
+//  into precomputed slots.
+class Foam::rbd::blockPivotingLCP::bodySpace
+{
+    const Foam::rbd::lcpFactors& factors_;
+
+    //- G^T: column a holds the row of contact a
+    sparseMatrix Gt_;
+
+    //- K = I + G^T E^-1 G (lower triangle)
+    sparseMatrix K_;
+
+    //- E^-1 of the last factorisation
+    Eigen::VectorXd Einv_;
+
+    //- Per contact a, from slotStart_[a]: the slots of K's values
+    //  that g_p g_q adds to, with the positions (p, q) in G^T's
+    //  values; the slots of K's diagonal
+    std::vector<label> slotStart_;
+    std::vector<label> slots_;
+    std::vector<std::pair<label, label>> pairs_;
+    std::vector<label> diagonalSlots_;
+
+    sparseLDLT ldlt_;
+
+public:
+
+    //- True if A's factors make body space the smaller system
+    static bool pays
+    (
+        const sparseMatrix& A,
+        const Foam::rbd::lcpFactors& factors
+    )
+    {
+        return
+            factors.valid() && factors.G.rows() == A.rows()
+         && factors.G.cols() < A.rows();
+    }
+
+    explicit bodySpace(const Foam::rbd::lcpFactors& factors)
+    :
+        factors_(factors),
+        Gt_(factors.G.transpose())
+    {
+        Gt_.makeCompressed();
+        const label d = Gt_.rows();
+        const label n = Gt_.cols();
+        const sparseMatrix GtG(Gt_*factors_.G);
+        std::vector<Eigen::Triplet<double>> pattern;
+        for (label j = 0; j < d; ++j)
+        {
+            pattern.emplace_back(j, j, 1.0);
+            for (sparseMatrix::InnerIterator it(GtG, j); it; ++it)
+            {
+                if (it.row() > j)
+                {
+                    pattern.emplace_back(it.row(), j, 1.0);
+                }
+            }
+        }
+        K_.resize(d, d);
+        K_.setFromTriplets(pattern.begin(), pattern.end());
+        K_.makeCompressed();
+
+        // Slot of (row, col) in K's compressed columns
+        const int* outer = K_.outerIndexPtr();
+        const int* inner = K_.innerIndexPtr();
+        auto slot = [&](const label row, const label col)
+        {
+            return label
+            (
+                std::lower_bound
+                (
+                    inner + outer[col], inner + outer[col + 1], row
+                )
+              - inner
+            );
+        };
+        for (label j = 0; j < d; ++j)
+        {
+            diagonalSlots_.push_back(slot(j, j));
+        }
+        slotStart_.assign(n + 1, 0);
+        const int* gOuter = Gt_.outerIndexPtr();
+        const int* gInner = Gt_.innerIndexPtr();
+        for (label a = 0; a < n; ++a)
+        {
+            slotStart_[a] = slots_.size();
+            for (label p = gOuter[a]; p < gOuter[a + 1]; ++p)
+            {
+                for (label q = gOuter[a]; q < gOuter[a + 1]; ++q)
+                {
+                    if (gInner[p] >= gInner[q])
+                    {
+                        slots_.push_back(slot(gInner[p], gInner[q]));
+                        pairs_.emplace_back(p, q);
+                    }
+                }
+            }
+        }
+        slotStart_[n] = slots_.size();
+        ldlt_.analyzePattern(K_);
+    }
+
+    //- The compliance s [1/kg]
+    const Eigen::VectorXd& compliance() const
+    {
+        return factors_.s;
+    }
+
+    //- A x = G G^T x + s x
+    Eigen::VectorXd product(const Eigen::VectorXd& x) const
+    {
+        return
+            factors_.G*Eigen::VectorXd(Gt_*x)
+          + factors_.s.cwiseProduct(x);
+    }
+
+    //- Factorise for E^-1 (>= 0 per contact); false if that failed
+    bool factorise(const Eigen::VectorXd& Einv)
+    {
+        Einv_ = Einv;
+        if (!Einv_.allFinite())
+        {
+            return false;
+        }
+        double* k = K_.valuePtr();
+        std::fill(k, k + K_.nonZeros(), 0.0);
+        for (const label slot : diagonalSlots_)
+        {
+            k[slot] = 1;
+        }
+        const double* g = Gt_.valuePtr();
+        for (label a = 0; a + 1 < label(slotStart_.size()); ++a)
+        {
+            const double e = Einv_(a);
+            if (e == 0)
+            {
+                continue;
+            }
+            for (label i = slotStart_[a]; i < slotStart_[a + 1]; ++i)
+            {
+                k[slots_[i]] +=
+                    e*g[pairs_[i].first]*g[pairs_[i].second];
+            }
+        }
+        ldlt_.factorize(K_);
+        return ldlt_.info() == Eigen::Success;
+    }
+
+    //- x with (E + G G^T) x = r on the contacts with E^-1 > 0 (0 on
+    //  the others), by the last factorisation
+    Eigen::VectorXd apply(const Eigen::VectorXd& r) const
+    {
+        const Eigen::VectorXd Er(Einv_.cwiseProduct(r));
+        const Eigen::VectorXd y(ldlt_.solve(Gt_*Er));
+        return Er - Einv_.cwiseProduct(factors_.G*y);
+    }
+};
+
+
+//- The interior point's Newton matrix A + diag(D), D > 0, factorised
+//  per step: in body space where that pays (with two steps of
+//  iterative refinement on A + D itself: E^-1 is large at loaded
+//  contacts, and r - G y loses digits), else in contact space (the
+//  pattern of A, ordered and analysed once)
+class Foam::rbd::blockPivotingLCP::newtonSystem
+{
+    const sparseMatrix& A_;
+
+    //- Body space, or null
+    bodySpace* body_;
+
+    //- Contact space: A with its diagonal stored, pointers to it
+    sparseMatrix M_;
+    std::vector<double*> diagonal_;
+    Eigen::VectorXd M0_;
+    sparseLDLT ldlt_;
+
+    //- D of the last factorisation
+    Eigen::VectorXd D_;
+
+public:
+
+    newtonSystem(const sparseMatrix& A, bodySpace* body)
+    :
+        A_(A),
+        body_(body)
+    {
+        if (body_)
+        {
+            return;
+        }
+        const label n = A.rows();
+        M_ = A;
+        for (label i = 0; i < n; ++i)
+        {
+            M_.coeffRef(i, i) += 0;
+        }
+        M_.makeCompressed();
+        diagonal_.resize(n);
+        for (label j = 0; j < n; ++j)
+        {
+            for (sparseMatrix::InnerIterator it(M_, j); it; ++it)
+            {
+                if (it.row() == j)
+                {
+                    diagonal_[j] = &it.valueRef();
+                }
+            }
+        }
+        M0_ = M_.diagonal();
+        ldlt_.analyzePattern(M_);
+    }
+
+    //- A x
+    Eigen::VectorXd product(const Eigen::VectorXd& x) const
+    {
+        return body_ ? body_->product(x) : A_*x;
+    }
+
+    //- Factorise A + diag(D); false if that failed
+    bool factorise(const Eigen::VectorXd& D)
+    {
+        D_ = D;
+        if (body_)
+        {
+            return body_->factorise
+            (
+                (body_->compliance() + D).cwiseInverse()
+            );
+        }
+        for (label i = 0; i < D.size(); ++i)
+        {
+            *diagonal_[i] = M0_(i) + D(i);
+        }
+        ldlt_.factorize(M_);
+        return ldlt_.info() == Eigen::Success;
+    }
+
+    //- (A + diag(D))^-1 r with the last factorisation
+    Eigen::VectorXd solve(const Eigen::VectorXd& r) const
+    {
+        if (!body_)
+        {
+            return ldlt_.solve(r);
+        }
+        Eigen::VectorXd x(body_->apply(r));
+        for (label refine = 0; refine < 2; ++refine)
+        {
+            x += body_->apply(r - product(x) - D_.cwiseProduct(x));
+        }
+        return x;
+    }
+};
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -615,7 +622,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     if (!result.converged && interiorPointIterations_ > 0)
     {
         Eigen::VectorXd fi;
-        result.iterations += interiorPoint(A, factors, b, diag, fi);
+        result.iterations += interiorPoint(A, body.get(), b, diag, fi);
         const scalar vi = violation(A, b, fi);
         if (vi <= tolerance_ || vi < v)
         {
@@ -658,7 +665,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
 Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
 (
     const Eigen::SparseMatrix<double>& A,
-    const lcpFactors& factors,
+    bodySpace* body,
     const Eigen::VectorXd& b,
     const Eigen::VectorXd& diag,
     Eigen::VectorXd& f
@@ -675,7 +682,7 @@ Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
         (A*f + b).cwiseMax(0.0) + Eigen::VectorXd::Constant(n, bRef)
     );
 
-    newtonSystem newton(A, factors);
+    newtonSystem newton(A, body);
 
     // The largest step in (0, 1] along (df, dw) that keeps f, w > 0
     auto maxStep = [&](const Eigen::VectorXd& df, const Eigen::VectorXd& dw)
