@@ -4,6 +4,7 @@
 
 #include "blockPivotingLCP.H"
 #include "baraffLCP.H"
+#include "lcpBodySpace.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -42,174 +43,6 @@ namespace
 
 // * * * * * * * * * * * * * * * Private Classes * * * * * * * * * * * * * //
 
-//- Systems (E + G G^T) x = r in body space, for A = G G^T + diag(s)
-//  given by its factors (lcpFactors, G n x d with d < n), by the
-//  Woodbury identity (see blockPivotingLCP.H):
-//      x = E^-1 (r - G y),   (I + G^T E^-1 G) y = G^T E^-1 r
-//  E^-1 is given per contact; a contact with E^-1 = 0 drops out (its
-//  x is 0), so the same factorisation serves a block A_FF + E_F of
-//  the active set F. K = I + G^T E^-1 G keeps one pattern (lower
-//  triangle), ordered once; its values are summed contact by contact
-//  into precomputed slots.
-class Foam::rbd::blockPivotingLCP::bodySpace
-{
-    const Foam::rbd::lcpFactors& factors_;
-
-    //- G^T: column a holds the row of contact a
-    sparseMatrix Gt_;
-
-    //- K = I + G^T E^-1 G (lower triangle)
-    sparseMatrix K_;
-
-    //- E^-1 of the last factorisation
-    Eigen::VectorXd Einv_;
-
-    //- Per contact a, from slotStart_[a]: the slots of K's values
-    //  that g_p g_q adds to, with the positions (p, q) in G^T's
-    //  values; the slots of K's diagonal
-    std::vector<label> slotStart_;
-    std::vector<label> slots_;
-    std::vector<std::pair<label, label>> pairs_;
-    std::vector<label> diagonalSlots_;
-
-    sparseLDLT ldlt_;
-
-public:
-
-    //- True if A's factors make body space the smaller system
-    static bool pays
-    (
-        const sparseMatrix& A,
-        const Foam::rbd::lcpFactors& factors
-    )
-    {
-        return
-            factors.valid() && factors.G.rows() == A.rows()
-         && factors.G.cols() < A.rows();
-    }
-
-    explicit bodySpace(const Foam::rbd::lcpFactors& factors)
-    :
-        factors_(factors),
-        Gt_(factors.G.transpose())
-    {
-        Gt_.makeCompressed();
-        const label d = Gt_.rows();
-        const label n = Gt_.cols();
-        const sparseMatrix GtG(Gt_*factors_.G);
-        std::vector<Eigen::Triplet<double>> pattern;
-        for (label j = 0; j < d; ++j)
-        {
-            pattern.emplace_back(j, j, 1.0);
-            for (sparseMatrix::InnerIterator it(GtG, j); it; ++it)
-            {
-                if (it.row() > j)
-                {
-                    pattern.emplace_back(it.row(), j, 1.0);
-                }
-            }
-        }
-        K_.resize(d, d);
-        K_.setFromTriplets(pattern.begin(), pattern.end());
-        K_.makeCompressed();
-
-        // Slot of (row, col) in K's compressed columns
-        const int* outer = K_.outerIndexPtr();
-        const int* inner = K_.innerIndexPtr();
-        auto slot = [&](const label row, const label col)
-        {
-            return label
-            (
-                std::lower_bound
-                (
-                    inner + outer[col], inner + outer[col + 1], row
-                )
-              - inner
-            );
-        };
-        for (label j = 0; j < d; ++j)
-        {
-            diagonalSlots_.push_back(slot(j, j));
-        }
-        slotStart_.assign(n + 1, 0);
-        const int* gOuter = Gt_.outerIndexPtr();
-        const int* gInner = Gt_.innerIndexPtr();
-        for (label a = 0; a < n; ++a)
-        {
-            slotStart_[a] = slots_.size();
-            for (label p = gOuter[a]; p < gOuter[a + 1]; ++p)
-            {
-                for (label q = gOuter[a]; q < gOuter[a + 1]; ++q)
-                {
-                    if (gInner[p] >= gInner[q])
-                    {
-                        slots_.push_back(slot(gInner[p], gInner[q]));
-                        pairs_.emplace_back(p, q);
-                    }
-                }
-            }
-        }
-        slotStart_[n] = slots_.size();
-        ldlt_.analyzePattern(K_);
-    }
-
-    //- The compliance s [1/kg]
-    const Eigen::VectorXd& compliance() const
-    {
-        return factors_.s;
-    }
-
-    //- A x = G G^T x + s x
-    Eigen::VectorXd product(const Eigen::VectorXd& x) const
-    {
-        return
-            factors_.G*Eigen::VectorXd(Gt_*x)
-          + factors_.s.cwiseProduct(x);
-    }
-
-    //- Factorise for E^-1 (>= 0 per contact); false if that failed
-    bool factorise(const Eigen::VectorXd& Einv)
-    {
-        Einv_ = Einv;
-        if (!Einv_.allFinite())
-        {
-            return false;
-        }
-        double* k = K_.valuePtr();
-        std::fill(k, k + K_.nonZeros(), 0.0);
-        for (const label slot : diagonalSlots_)
-        {
-            k[slot] = 1;
-        }
-        const double* g = Gt_.valuePtr();
-        for (label a = 0; a + 1 < label(slotStart_.size()); ++a)
-        {
-            const double e = Einv_(a);
-            if (e == 0)
-            {
-                continue;
-            }
-            for (label i = slotStart_[a]; i < slotStart_[a + 1]; ++i)
-            {
-                k[slots_[i]] +=
-                    e*g[pairs_[i].first]*g[pairs_[i].second];
-            }
-        }
-        ldlt_.factorize(K_);
-        return ldlt_.info() == Eigen::Success;
-    }
-
-    //- x with (E + G G^T) x = r on the contacts with E^-1 > 0 (0 on
-    //  the others), by the last factorisation
-    Eigen::VectorXd apply(const Eigen::VectorXd& r) const
-    {
-        const Eigen::VectorXd Er(Einv_.cwiseProduct(r));
-        const Eigen::VectorXd y(ldlt_.solve(Gt_*Er));
-        return Er - Einv_.cwiseProduct(factors_.G*y);
-    }
-};
-
-
 //- The interior point's Newton matrix A + diag(D), D > 0, factorised
 //  per step: in body space where that pays (with two steps of
 //  iterative refinement on A + D itself: E^-1 is large at loaded
@@ -220,7 +53,7 @@ class Foam::rbd::blockPivotingLCP::newtonSystem
     const sparseMatrix& A_;
 
     //- Body space, or null
-    bodySpace* body_;
+    lcpBodySpace* body_;
 
     //- Contact space: A with its diagonal stored, pointers to it
     sparseMatrix M_;
@@ -233,7 +66,7 @@ class Foam::rbd::blockPivotingLCP::newtonSystem
 
 public:
 
-    newtonSystem(const sparseMatrix& A, bodySpace* body)
+    newtonSystem(const sparseMatrix& A, lcpBodySpace* body)
     :
         A_(A),
         body_(body)
@@ -454,11 +287,11 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     // Body space, where A's factors make it the smaller system: the
     // candidate (A_FF + eps I) f_F = -b_F by the Woodbury identity, E^-1 =
     // 1/(s + eps) on F and 0 elsewhere, refined in the same way
-    autoPtr<bodySpace> body;
+    autoPtr<lcpBodySpace> body;
     orderingCache::permutation natural;
-    if (bodySpace::pays(A, factors))
+    if (lcpBodySpace::pays(A, factors))
     {
-        body.reset(new bodySpace(factors));
+        body.reset(new lcpBodySpace(factors));
         natural.setIdentity(n);
     }
     const orderingCache::permutation& order =
@@ -665,7 +498,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
 Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
 (
     const Eigen::SparseMatrix<double>& A,
-    bodySpace* body,
+    lcpBodySpace* body,
     const Eigen::VectorXd& b,
     const Eigen::VectorXd& diag,
     Eigen::VectorXd& f
