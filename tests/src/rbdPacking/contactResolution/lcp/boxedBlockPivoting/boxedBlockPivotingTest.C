@@ -1,0 +1,323 @@
+// Unit tests for src/rbdPacking/contactResolution/lcp/boxedBlockPivoting:
+// the boxed LCP of resting contacts with friction (a normal row and two
+// tangent rows per contact) against a brute-force reference that tries
+// every assignment of the variables to their lower bound, upper bound or
+// the free set; block pivoting alone and the interior point alone; body
+// space against contact space; fixed variables; the violation measure
+
+#include <gtest/gtest.h>
+#include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
+#include "boxedBlockPivoting.H"
+
+#include <limits>
+
+using namespace Foam;
+using namespace lcpTest;
+
+namespace
+{
+    const double inf = std::numeric_limits<double>::infinity();
+
+    //- A boxed problem with A's factors
+    struct boxedProblem
+    {
+        problem p;
+        Vec lo, hi;
+        rbd::lcpFactors factors;
+    };
+
+    //- Spheres resting on each other and the floor, each contact with a
+    //  normal row and two tangent rows; A = J W J^T + diag(c A_ii) (the
+    //  compliance of restingContactSolver), b = J u + a random slip/h on
+    //  the tangent rows; normal in [0, inf), tangents in +-mu phiRef
+    boxedProblem randomFrictionProblem(rng& gen, const int nContacts)
+    {
+        const int nBodies = uniformInt(gen, 1, 3);
+        std::vector<body> bodies;
+        for (int i = 0; i < nBodies; ++i)
+        {
+            bodies.push_back
+            (
+                sphere
+                (
+                    uniform(gen, 0.002, 0.01), 0.005,
+                    Vec3(0.01*i, 0, 0.005)
+                )
+            );
+        }
+        const int n = 3*nContacts;
+        Mat J(n, 6*nBodies);
+        Vec lo(n), hi(n), slip(Vec::Zero(n));
+        for (int c = 0; c < nContacts; ++c)
+        {
+            const int i = uniformInt(gen, 0, nBodies - 1);
+            int k = uniformInt(gen, -1, nBodies - 1);
+            if (k == i)
+            {
+                k = -1;
+            }
+            const Vec3 nrm(randomUnit(gen));
+            const Vec3 p(bodies[i].x - 0.005*nrm);
+            const Vec3 t1(nrm.unitOrthogonal());
+            const Vec3 t2(nrm.cross(t1));
+            J.row(3*c) = contactRow(bodies, i, k, p, nrm);
+            J.row(3*c + 1) = contactRow(bodies, i, k, p, t1);
+            J.row(3*c + 2) = contactRow(bodies, i, k, p, t2);
+            const double limit = uniform(gen, 0, 0.05);
+            lo(3*c) = 0;
+            hi(3*c) = inf;
+            lo(3*c + 1) = lo(3*c + 2) = -limit;
+            hi(3*c + 1) = hi(3*c + 2) = limit;
+            slip(3*c + 1) = uniform(gen, -10, 10);
+            slip(3*c + 2) = uniform(gen, -10, 10);
+        }
+        problem p(restingUnderGravity(bodies, J));
+        Vec s(n);
+        for (int r = 0; r < n; ++r)
+        {
+            s(r) = 1e-5*p.A(r, r);
+            p.A(r, r) += s(r);
+        }
+        p.b += slip;
+        return boxedProblem{p, lo, hi, factorsOf(bodies, J, s)};
+    }
+
+    //- Every assignment of the variables to L, U or F (3^n, n <= 9): the
+    //  first that solves the problem (A positive definite: the only one)
+    bool enumerate(const boxedProblem& q, Vec& x)
+    {
+        const Mat& A = q.p.A;
+        const Vec& b = q.p.b;
+        const int n = b.size();
+        long combos = 1;
+        for (int i = 0; i < n; ++i)
+        {
+            combos *= 3;
+        }
+        const double bRef = b.cwiseAbs().maxCoeff();
+        for (long code = 0; code < combos; ++code)
+        {
+            std::vector<int> side(n);
+            long c = code;
+            bool valid = true;
+            for (int i = 0; i < n; ++i)
+            {
+                side[i] = int(c % 3);
+                c /= 3;
+                valid = valid && !(side[i] == 2 && !std::isfinite(q.hi(i)));
+            }
+            if (!valid)
+            {
+                continue;
+            }
+            x = Vec::Zero(n);
+            std::vector<int> F;
+            for (int i = 0; i < n; ++i)
+            {
+                if (side[i] == 0) x(i) = q.lo(i);
+                else if (side[i] == 2) x(i) = q.hi(i);
+                else F.push_back(i);
+            }
+            const Vec r(-(b + A*x));
+            Mat AFF(F.size(), F.size());
+            Vec rF(F.size());
+            for (size_t a = 0; a < F.size(); ++a)
+            {
+                rF(a) = r(F[a]);
+                for (size_t c2 = 0; c2 < F.size(); ++c2)
+                {
+                    AFF(a, c2) = A(F[a], F[c2]);
+                }
+            }
+            const Vec xF(AFF.ldlt().solve(rF));
+            for (size_t a = 0; a < F.size(); ++a)
+            {
+                x(F[a]) = xF(a);
+            }
+            const Vec w(A*x + b);
+            const double xTol = 1e-9*std::max(x.cwiseAbs().maxCoeff(), 1e-30);
+            bool ok = true;
+            for (int i = 0; i < n && ok; ++i)
+            {
+                if (side[i] == 1)
+                {
+                    ok = x(i) >= q.lo(i) - xTol && x(i) <= q.hi(i) + xTol;
+                }
+                else if (side[i] == 0)
+                {
+                    ok = w(i) >= -1e-9*bRef;
+                }
+                else
+                {
+                    ok = w(i) <= 1e-9*bRef;
+                }
+            }
+            if (ok)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    //- Solve q with solver, with or without the factors, and compare with
+    //  the reference
+    void compare
+    (
+        const rbd::boxedBlockPivoting& solver,
+        const boxedProblem& q,
+        const bool bodySpace,
+        const std::string& what
+    )
+    {
+        Vec xRef;
+        ASSERT_TRUE(enumerate(q, xRef)) << what << ": no reference";
+
+        std::vector<rbd::boxedBlockPivoting::side> sides;
+        Vec x;
+        const rbd::lcpResult r = solver.solve
+        (
+            q.p.A.sparseView(), bodySpace ? q.factors : rbd::lcpFactors(),
+            q.p.b, q.lo, q.hi, sides, x
+        );
+        EXPECT_TRUE(r.converged) << what << ": " << r.maxViolation;
+        EXPECT_LE(r.maxViolation, 1e-8) << what;
+        ASSERT_EQ(x.size(), xRef.size()) << what;
+        for (int i = 0; i < x.size(); ++i)
+        {
+            EXPECT_GE(x(i), q.lo(i)) << what;
+            EXPECT_LE(x(i), q.hi(i)) << what;
+        }
+        EXPECT_LE
+        (
+            (x - xRef).cwiseAbs().maxCoeff(),
+            1e-6*xRef.cwiseAbs().maxCoeff() + 1e-15
+        ) << what;
+    }
+}
+
+
+TEST(boxedBlockPivoting, blockPivotingMatchesEnumeration)
+{
+    // Pivoting alone (no interior point) on problems of one to three
+    // contacts (3-9 variables)
+    const rbd::boxedBlockPivoting pivoting(1e-9, 1e-10, 100, 0);
+    rng gen(11);
+    label solved = 0;
+    for (int trial = 0; trial < 40; ++trial)
+    {
+        const boxedProblem q(randomFrictionProblem(gen, uniformInt(gen, 1, 3)));
+        std::vector<rbd::boxedBlockPivoting::side> sides;
+        Vec x;
+        const rbd::lcpResult r = pivoting.solve
+        (
+            q.p.A.sparseView(), rbd::lcpFactors(), q.p.b, q.lo, q.hi,
+            sides, x
+        );
+        if (r.converged)
+        {
+            ++solved;
+            compare(pivoting, q, false, "trial " + std::to_string(trial));
+        }
+    }
+    // Block exchanges may cycle (then the interior point takes over); on
+    // these small problems they rarely do
+    EXPECT_GE(solved, 36);
+}
+
+
+TEST(boxedBlockPivoting, interiorPointMatchesEnumeration)
+{
+    // One factorisation of block pivoting, then the interior point
+    const rbd::boxedBlockPivoting interior(1e-9, 1e-10, 1, 50);
+    rng gen(12);
+    for (int trial = 0; trial < 30; ++trial)
+    {
+        compare
+        (
+            interior, randomFrictionProblem(gen, uniformInt(gen, 1, 3)),
+            false, "trial " + std::to_string(trial)
+        );
+    }
+}
+
+
+TEST(boxedBlockPivoting, bodySpaceMatchesEnumeration)
+{
+    // Three contacts on one sphere (9 rows, 6 degrees of freedom): body
+    // space; pivoting and the interior point alike
+    const rbd::boxedBlockPivoting solver;
+    const rbd::boxedBlockPivoting interior(1e-9, 1e-10, 1, 50);
+    rng gen(13);
+    label inBodySpace = 0;
+    for (int trial = 0; trial < 30; ++trial)
+    {
+        const boxedProblem q(randomFrictionProblem(gen, 3));
+        if (q.factors.G.cols() < q.factors.G.rows())
+        {
+            ++inBodySpace;
+            compare(solver, q, true, "pivoting " + std::to_string(trial));
+            compare(interior, q, true, "interior " + std::to_string(trial));
+        }
+    }
+    EXPECT_GE(inBodySpace, 5);
+}
+
+
+TEST(boxedBlockPivoting, keepsFixedVariablesAtTheirBound)
+{
+    // lo = hi (friction of a contact without normal force): x = lo, w free
+    rng gen(14);
+    boxedProblem q(randomFrictionProblem(gen, 2));
+    q.lo(1) = q.hi(1) = 0.01;
+    q.lo(2) = q.hi(2) = -0.02;
+    compare(rbd::boxedBlockPivoting(), q, false, "fixed");
+    std::vector<rbd::boxedBlockPivoting::side> sides;
+    Vec x;
+    rbd::boxedBlockPivoting().solve
+    (
+        q.p.A.sparseView(), rbd::lcpFactors(), q.p.b, q.lo, q.hi, sides, x
+    );
+    EXPECT_EQ(x(1), 0.01);
+    EXPECT_EQ(x(2), -0.02);
+}
+
+
+TEST(boxedBlockPivoting, violationMeasuresBoundsAndComplementarity)
+{
+    const Vec lo((Vec(3) << 0, -1, -1).finished());
+    const Vec hi((Vec(3) << inf, 1, 1).finished());
+    const Vec b((Vec(3) << -1, 1, 1).finished());
+    // At the bounds with the right signs of w, or free with w = 0
+    EXPECT_EQ
+    (
+        rbd::boxedBlockPivoting::violation
+        (
+            (Vec(3) << 0, -2, 0).finished(), b, lo, hi,
+            (Vec(3) << 0.5, 1, 0.3).finished()
+        ),
+        0
+    );
+    // Above its upper bound
+    EXPECT_NEAR
+    (
+        rbd::boxedBlockPivoting::violation
+        (
+            Vec::Zero(3), b, lo, hi, (Vec(3) << 0.5, 1.5, 0).finished()
+        ),
+        0.5/1.5, 1e-15
+    );
+    // At the lower bound pushed below it (w < 0): a violation
+    EXPECT_GT
+    (
+        rbd::boxedBlockPivoting::violation
+        (
+            (Vec(3) << 0, 0, -1).finished(), b, lo, hi,
+            (Vec(3) << 0.5, 0, -1).finished()
+        ),
+        0.1
+    );
+}
+
+
+// ************************************************************************* //
