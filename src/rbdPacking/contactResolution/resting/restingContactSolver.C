@@ -4,6 +4,7 @@
 
 #include "restingContactSolver.H"
 #include "collisionResolver.H"
+#include <limits>
 #include <Eigen/Dense>
 #include <numeric>
 #include <vector>
@@ -105,11 +106,14 @@ namespace
 Foam::rbd::restingContactSolver::restingContactSolver
 (
     const dictionary& dict,
-    const scalar compliance
+    const scalar compliance,
+    const bool coupled
 )
 :
     solver_(lcpSolver::New(dict)),
+    boxed_(),
     compliance_(compliance),
+    coupled_(coupled),
     normalForces_(),
     active_()
 {}
@@ -187,25 +191,27 @@ Foam::rbd::restingContactSolver::solve
     // Warm start: pairs active in the previous step (then in pass 1)
     std::unordered_map<std::uint64_t, bool>& active = active_;
 
-    auto solveIsland =
-    [&](const std::vector<label>& cs, const UList<vector>& Fb,
-        const UList<vector>& tb, Eigen::VectorXd& phi)
+    // A = J M^-1 J^T (+ the compliance) of constraint rows (contact, unit
+    // direction u): J = [u^T, (r_i x u)^T | -u^T, -(r_k x u)^T]
+    auto assemble =
+    [&](const std::vector<std::pair<label, vector>>& dirs,
+        Eigen::SparseMatrix<double>& A, Eigen::VectorXd& shift)
     {
-        const label n = cs.size();
+        const label n = dirs.size();
         const row zero{Zero, Zero, Zero, Zero};
         rowsI.assign(n, zero);
         rowsK.assign(n, zero);
 
         // Jacobian rows and the bodies' contact lists
-        std::vector<label> bodyList;
         for (label a = 0; a < n; ++a)
         {
-            const contact& c = contacts[cs[a]];
+            const contact& c = contacts[dirs[a].first];
+            const vector& u = dirs[a].second;
             const rigidBody& bi = bodies[c.i];
             const vector ri(c.p - bi.x());
             row& Ri = rowsI[a];
-            Ri.lin = c.n;
-            Ri.ang = (ri ^ c.n);
+            Ri.lin = u;
+            Ri.ang = (ri ^ u);
             Ri.wLin = bi.invMass()*Ri.lin;
             Ri.wAng = bi.applyInvInertia(Ri.ang);
 
@@ -214,15 +220,15 @@ Foam::rbd::restingContactSolver::solve
                 const rigidBody& bk = bodies[c.k];
                 const vector rk(c.p - bk.x());
                 row& Rk = rowsK[a];
-                Rk.lin = -c.n;
-                Rk.ang = -(rk ^ c.n);
+                Rk.lin = -u;
+                Rk.ang = -(rk ^ u);
                 Rk.wLin = bk.invMass()*Rk.lin;
                 Rk.wAng = bk.applyInvInertia(Rk.ang);
             }
         }
 
-        // A = J M^-1 J^T, summed over the bodies two contacts share:
-        // sparse, from each moving body's list of the island's rows on it
+        // Summed over the bodies two rows share: sparse, from each moving
+        // body's list of the island's rows on it
         std::vector<label> touched;
         auto addRow = [&](const label body, const label a, const bool kSide)
         {
@@ -237,7 +243,7 @@ Foam::rbd::restingContactSolver::solve
         };
         for (label a = 0; a < n; ++a)
         {
-            const contact& c = contacts[cs[a]];
+            const contact& c = contacts[dirs[a].first];
             addRow(c.i, a, false);
             addRow(c.k, a, true);
         }
@@ -261,16 +267,18 @@ Foam::rbd::restingContactSolver::solve
             }
             bodyRows[body].clear();
         }
-        Eigen::SparseMatrix<double> A(n, n);
+        A.resize(n, n);
         A.setFromTriplets(triplets.begin(), triplets.end());
 
         // The compliance of the mesh contacts (see the header): one
         // solution where redundant contact points make A singular
-        Eigen::VectorXd shift(n);
+        shift.resize(n);
         for (label a = 0; a < n; ++a)
         {
             shift(a) =
-                contacts[cs[a]].centreBased ? 0 : compliance_*A.coeff(a, a);
+                contacts[dirs[a].first].centreBased
+              ? 0
+              : compliance_*A.coeff(a, a);
             A.coeffRef(a, a) += shift(a);
         }
 
@@ -320,7 +328,7 @@ Foam::rbd::restingContactSolver::solve
             };
             for (label a = 0; a < n; ++a)
             {
-                const contact& c = contacts[cs[a]];
+                const contact& c = contacts[dirs[a].first];
                 addG(a, c.i, rowsI[a]);
                 if (c.k >= 0 && !fixed[c.k])
                 {
@@ -335,45 +343,67 @@ Foam::rbd::restingContactSolver::solve
                 bodyColumn[body] = -1;
             }
         }
+    };
 
-        // B: d'' without contact forces (eq 28), plus the step term
+    // B of a normal row: d'' without contact forces (eq 28), plus the
+    // step term
+    auto normalB =
+    [&](const contact& c, const UList<vector>& Fb, const UList<vector>& tb)
+    {
+        const vector vRel
+        (
+            collisionResolver::relativeVelocity(c, bodies, fixed)
+        );
+        const scalar vn = vRel & c.n;
+        scalar ddGap;
+        if (c.centreBased)
+        {
+            // Gap between centres (spheres): the linear part n . (a_i -
+            // a_k) of d''. The curvature part n' . (v_i - v_k) is left
+            // out on purpose: with it, a pellet sliding along the
+            // concave tube wall would let the wall force do positive
+            // work; without it the work of every contact force over a
+            // step is -phi max(d, 0) <= 0 (see the header). Its
+            // geometric error, h^2 |v_t|^2/(2 rho) per step, is left to
+            // the overlap correction.
+            vector aC(bodies[c.i].invMass()*Fb[c.i]);
+            if (c.k >= 0 && !fixed[c.k])
+            {
+                aC -= bodies[c.k].invMass()*Fb[c.k];
+            }
+            ddGap = (c.n & aC);
+        }
+        else
+        {
+            // Material contact points (eq 28)
+            const vector aRel
+            (
+                relativeAcceleration(c, bodies, fixed, Fb, tb)
+            );
+            ddGap = (c.n & aRel) + 2*(c.nDot & vRel);
+        }
+        return ddGap + 2*(max(c.gap, scalar(0)) + h*vn)/sqr(h);
+    };
+
+    // The normal forces of an island's contacts for the forces Fb, tb
+    auto solveIsland =
+    [&](const std::vector<label>& cs, const UList<vector>& Fb,
+        const UList<vector>& tb, Eigen::VectorXd& phi)
+    {
+        const label n = cs.size();
+        std::vector<std::pair<label, vector>> dirs(n);
+        for (label a = 0; a < n; ++a)
+        {
+            dirs[a] = {cs[a], contacts[cs[a]].n};
+        }
+        Eigen::SparseMatrix<double> A;
+        Eigen::VectorXd shift;
+        assemble(dirs, A, shift);
+
         Eigen::VectorXd B(n);
         for (label a = 0; a < n; ++a)
         {
-            const contact& c = contacts[cs[a]];
-            const vector vRel
-            (
-                collisionResolver::relativeVelocity(c, bodies, fixed)
-            );
-            const scalar vn = vRel & c.n;
-            scalar ddGap;
-            if (c.centreBased)
-            {
-                // Gap between centres (spheres): the linear part n . (a_i -
-                // a_k) of d''. The curvature part n' . (v_i - v_k) is left
-                // out on purpose: with it, a pellet sliding along the
-                // concave tube wall would let the wall force do positive
-                // work; without it the work of every contact force over a
-                // step is -phi max(d, 0) <= 0 (see the header). Its
-                // geometric error, h^2 |v_t|^2/(2 rho) per step, is left to
-                // the overlap correction.
-                vector aC(bodies[c.i].invMass()*Fb[c.i]);
-                if (c.k >= 0 && !fixed[c.k])
-                {
-                    aC -= bodies[c.k].invMass()*Fb[c.k];
-                }
-                ddGap = (c.n & aC);
-            }
-            else
-            {
-                // Material contact points (eq 28)
-                const vector aRel
-                (
-                    relativeAcceleration(c, bodies, fixed, Fb, tb)
-                );
-                ddGap = (c.n & aRel) + 2*(c.nDot & vRel);
-            }
-            B(a) = ddGap + 2*(max(c.gap, scalar(0)) + h*vn)/sqr(h);
+            B(a) = normalB(contacts[cs[a]], Fb, tb);
         }
 
         // The active set to start from: the contacts that carried a force
@@ -422,6 +452,216 @@ Foam::rbd::restingContactSolver::solve
         }
     };
 
+    // The normal forces and friction of an island of material contact
+    // points, together (see the header): true if solved, then phi and
+    // the friction of its contacts are in phiAll and friction
+    auto solveCoupled =
+    [&](const std::vector<label>& cs, List<scalar>& phiAll)
+    {
+        const label nc = cs.size();
+
+        // Rows: the normal of each contact, and two tangents where it has
+        // friction, t1 against its slip at the end of the step under the
+        // frictionless forces of pass 1 (so that where the contact slides
+        // the box of the two gives mu phi against the slip, as Coulomb's
+        // cone does)
+        List<vector> Ftot(Fext);
+        List<vector> tauTot(tauExt);
+        for (const label ci : cs)
+        {
+            applyForce
+            (
+                contacts[ci], phiAll[ci]*contacts[ci].n, bodies, fixed,
+                Ftot, tauTot
+            );
+        }
+        std::vector<std::pair<label, vector>> dirs;
+        std::vector<label> normalRow(nc);
+        std::vector<label> tangentRow(nc, -1);
+        for (label a = 0; a < nc; ++a)
+        {
+            const contact& c = contacts[cs[a]];
+            normalRow[a] = dirs.size();
+            dirs.emplace_back(cs[a], c.n);
+            if (c.mu > 0)
+            {
+                const vector vEnd
+                (
+                    collisionResolver::relativeVelocity(c, bodies, fixed)
+                  + h*relativeAcceleration(c, bodies, fixed, Ftot, tauTot)
+                );
+                vector t1(vEnd - (vEnd & c.n)*c.n);
+                if (mag(t1) <= SMALL*mag(vEnd) || mag(t1) < VSMALL)
+                {
+                    // No slip: any tangent (the friction is free in both)
+                    const vector axis
+                    (
+                        mag(c.n.x()) < 0.6 ? vector(1, 0, 0)
+                      : vector(0, 1, 0)
+                    );
+                    t1 = axis - (axis & c.n)*c.n;
+                }
+                // Friction opposes the slip
+                t1 /= -mag(t1);
+                tangentRow[a] = dirs.size();
+                dirs.emplace_back(cs[a], t1);
+                dirs.emplace_back(cs[a], (c.n ^ t1));
+            }
+        }
+        const label n = dirs.size();
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(n));
+        for (label a = 0; a < nc; ++a)
+        {
+            x(normalRow[a]) = phiAll[cs[a]];
+        }
+        std::vector<boxedBlockPivoting::side> sides
+        (
+            n, boxedBlockPivoting::side::free
+        );
+        for (label a = 0; a < nc; ++a)
+        {
+            if (x(normalRow[a]) <= 0)
+            {
+                sides[normalRow[a]] = boxedBlockPivoting::side::lower;
+            }
+        }
+
+        Eigen::SparseMatrix<double> A;
+        Eigen::VectorXd shift;
+        assemble(dirs, A, shift);
+        autoPtr<lcpBodySpace> body;
+        if (lcpBodySpace::pays(A, factors))
+        {
+            body.reset(new lcpBodySpace(factors));
+        }
+
+        // B: the normal rows as in solveIsland. A tangent row asks for the
+        // slip v1 = -beta v0 at the end of the step, t . (a_rel + (1 +
+        // beta) v_rel/h): beta = 0 stops the slip, which is dissipative
+        // where the friction opposes the slip v0 the step starts with; a
+        // contact whose friction points along v0 (f . v0 > 0) gets beta =
+        // 1 in the next round: zero displacement over the step, v1 = -v0,
+        // and no work (midpoint rule, constant force: the work is f . (v0
+        // + v1) h/2)
+        std::vector<scalar> beta(nc, 0);
+        std::vector<vector> v0(nc, Zero);
+        std::vector<vector> aExt(nc, Zero);
+        for (label a = 0; a < nc; ++a)
+        {
+            if (tangentRow[a] >= 0)
+            {
+                const contact& c = contacts[cs[a]];
+                v0[a] = collisionResolver::relativeVelocity(c, bodies, fixed);
+                aExt[a] = relativeAcceleration(c, bodies, fixed, Fext, tauExt);
+            }
+        }
+        Eigen::VectorXd B(n);
+        auto setB = [&]()
+        {
+            for (label a = 0; a < nc; ++a)
+            {
+                const contact& c = contacts[cs[a]];
+                B(normalRow[a]) = normalB(c, Fext, tauExt);
+                if (tangentRow[a] >= 0)
+                {
+                    const vector target(aExt[a] + (1 + beta[a])*v0[a]/h);
+                    for (label k = 0; k < 2; ++k)
+                    {
+                        const label r = tangentRow[a] + k;
+                        B(r) = (dirs[r].second & target);
+                    }
+                }
+            }
+        };
+
+        // Rounds: the friction bounds |f_t1|, |f_t2| <= mu phi (a box,
+        // t1 along the predicted slip: where the contact slides its
+        // friction is mu phi along t1) for the normal forces of the round
+        // before (pass 1 first), and beta as above. Done when no beta
+        // changes and the normal force of every contact whose friction
+        // is at a bound moved by less than frictionBoundTolerance
+        const scalar inf = std::numeric_limits<scalar>::infinity();
+        Eigen::VectorXd lo(Eigen::VectorXd::Zero(n));
+        Eigen::VectorXd hi(Eigen::VectorXd::Constant(n, inf));
+        std::vector<scalar> limitUsed(nc, 0);
+        bool settled = false;
+        label round = 0;
+        for (; round < frictionRounds_ && !settled; ++round)
+        {
+            setB();
+            for (label a = 0; a < nc; ++a)
+            {
+                const label r = tangentRow[a];
+                if (r >= 0)
+                {
+                    limitUsed[a] = contacts[cs[a]].mu*x(normalRow[a]);
+                    for (label k = 0; k < 2; ++k)
+                    {
+                        lo(r + k) = -limitUsed[a];
+                        hi(r + k) = limitUsed[a];
+                    }
+                }
+            }
+
+            const lcpResult lr =
+                boxed_.solve(A, body.get(), B, lo, hi, sides, x);
+            res.iterations += lr.iterations;
+            if (!(lr.maxViolation <= lcpSolver::usableViolation))
+            {
+                return false;
+            }
+
+            settled = true;
+            for (label a = 0; a < nc; ++a)
+            {
+                const label r = tangentRow[a];
+                if (r < 0)
+                {
+                    continue;
+                }
+                const vector f
+                (
+                    x(r)*dirs[r].second + x(r + 1)*dirs[r + 1].second
+                );
+                if (beta[a] == 0 && (f & v0[a]) > 0)
+                {
+                    beta[a] = 1;
+                    settled = false;
+                }
+                const scalar limit = contacts[cs[a]].mu*x(normalRow[a]);
+                const bool atBound =
+                    sides[r] != boxedBlockPivoting::side::free
+                 || sides[r + 1] != boxedBlockPivoting::side::free;
+                if
+                (
+                    (atBound || mag(f) > limit)
+                 && mag(limit - limitUsed[a])
+                  > frictionBoundTolerance*limitUsed[a] + VSMALL
+                )
+                {
+                    settled = false;
+                }
+            }
+        }
+        res.largestIsland = max(res.largestIsland, n);
+
+        // The last round's solution as it is: its friction lies in the
+        // box of the normal forces of the round before
+        for (label a = 0; a < nc; ++a)
+        {
+            const label ci = cs[a];
+            phiAll[ci] = max(x(normalRow[a]), scalar(0));
+            friction[ci] = Zero;
+            if (tangentRow[a] >= 0)
+            {
+                const label r = tangentRow[a];
+                friction[ci] =
+                    x(r)*dirs[r].second + x(r + 1)*dirs[r + 1].second;
+            }
+        }
+        return true;
+    };
+
     // Pass 1: normal forces without friction
     List<scalar> phiAll(contacts.size(), scalar(0));
     for (const label r : roots)
@@ -448,26 +688,69 @@ Foam::rbd::restingContactSolver::solve
 
     if (anyFriction)
     {
+        // Islands of material contact points (mesh pellets, cylinders and
+        // rings against the tube): normal forces and friction in one
+        // solve. The others (spheres, whose forces all point through
+        // their centres), and a coupled solve that fails: friction for the
+        // frictionless normal forces, then the normal forces again
+        std::vector<bool> staggered(contacts.size(), false);
+        std::vector<label> staggeredRoots;
+        for (const label r : roots)
+        {
+            const std::vector<label>& island = islandOf[r];
+            bool material = true;
+            bool withFriction = false;
+            for (const label ci : island)
+            {
+                material = material && !contacts[ci].centreBased;
+                withFriction = withFriction || contacts[ci].mu > 0;
+            }
+            if (!withFriction)
+            {
+                continue;
+            }
+            if (coupled_ && material && solveCoupled(island, phiAll))
+            {
+                for (const label ci : island)
+                {
+                    applyForce
+                    (
+                        contacts[ci], friction[ci], bodies, fixed,
+                        Ffric, tauFric
+                    );
+                }
+                continue;
+            }
+            staggeredRoots.push_back(r);
+            for (const label ci : island)
+            {
+                staggered[ci] = true;
+            }
+        }
+
         // Friction from the predicted slip at the end of the step, clamped
         // to mu phi (eq 9); two Gauss-Seidel sweeps for coupled contacts
         List<vector> Ftot(Fext);
         List<vector> tauTot(tauExt);
         forAll(contacts, ci)
         {
-            applyForce
-            (
-                contacts[ci], phiAll[ci]*contacts[ci].n, bodies, fixed,
-                Ftot, tauTot
-            );
+            if (staggered[ci])
+            {
+                applyForce
+                (
+                    contacts[ci], phiAll[ci]*contacts[ci].n, bodies, fixed,
+                    Ftot, tauTot
+                );
+            }
         }
 
-        for (label sweep = 0; sweep < 2; ++sweep)
+        for (label sweep = 0; sweep < 2 && staggeredRoots.size(); ++sweep)
         {
             forAll(contacts, ci)
             {
                 const contact& c = contacts[ci];
                 const scalar limit = c.mu*phiAll[ci];
-                if (limit <= 0)
+                if (!staggered[ci] || limit <= 0)
                 {
                     continue;
                 }
@@ -511,7 +794,7 @@ Foam::rbd::restingContactSolver::solve
             Fb[b] += Ffric[b];
             tb[b] += tauFric[b];
         }
-        for (const label r : roots)
+        for (const label r : staggeredRoots)
         {
             Eigen::VectorXd phi;
             solveIsland(islandOf[r], Fb, tb, phi);

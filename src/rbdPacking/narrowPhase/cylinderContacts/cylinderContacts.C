@@ -4,6 +4,9 @@
 
 #include "cylinderContacts.H"
 
+#include <algorithm>
+#include <vector>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -37,7 +40,8 @@ void Foam::rbd::cylinderContacts::cylinderTube
     const scalar b,
     const tube& container,
     const scalar band,
-    DynamicList<contact>& contacts
+    DynamicList<contact>& contacts,
+    const UList<scalar>& rimAngles
 )
 {
     const point& x = bi.x();
@@ -80,9 +84,46 @@ void Foam::rbd::cylinderContacts::cylinderTube
         contacts.append(c);
     };
 
+    // The rim points to try for the direction d (unit, normal to the
+    // axis) from the rim centre c: the circle's point, or the vertices of
+    // the polygon edge its angle falls on
+    const tensor& R = bi.R();
+    const label nRim = rimAngles.size();
+    auto rimPoints = [&](const point& c, const vector& d, point q[2])
+    {
+        if (nRim < 3)
+        {
+            q[0] = c + a*d;
+            return label(1);
+        }
+        const vector db(R.T() & d);
+        const scalar phi = Foam::atan2(db.y(), db.x());
+        label j = label
+        (
+            std::upper_bound(rimAngles.begin(), rimAngles.end(), phi)
+          - rimAngles.begin()
+        );
+        const scalar theta[2] =
+        {
+            rimAngles[(j + nRim - 1) % nRim], rimAngles[j % nRim]
+        };
+        for (label k = 0; k < 2; ++k)
+        {
+            q[k] =
+                c
+              + a
+               *(
+                    R
+                  & vector(Foam::cos(theta[k]), Foam::sin(theta[k]), 0)
+                );
+        }
+        return label(2);
+    };
+
     for (const scalar side : {-1.0, 1.0})
     {
         const point c(x + side*b*ax);
+        point q[2];
 
         if (nearBottom && c.z() - a < band)
         {
@@ -90,10 +131,13 @@ void Foam::rbd::cylinderContacts::cylinderTube
             const vector u(ax ^ w);
             for (const vector& d : {w, u, -w, -u})
             {
-                const point p(c + a*d);
-                if (p.z() < band)
+                const label nq = rimPoints(c, d, q);
+                for (label k = 0; k < nq; ++k)
                 {
-                    add(p, tubeBottom, p.z());
+                    if (q[k].z() < band)
+                    {
+                        add(q[k], tubeBottom, q[k].z());
+                    }
                 }
             }
         }
@@ -124,15 +168,45 @@ void Foam::rbd::cylinderContacts::cylinderTube
             const vector u(ax ^ w);
             for (const vector& d : {w, u, -w, -u})
             {
-                const point p(c + a*d);
-                const scalar rho = tube::axialDistance(p);
-                if (rho > VSMALL && Rt - rho < band)
+                const label nq = rimPoints(c, d, q);
+                for (label k = 0; k < nq; ++k)
                 {
-                    add(p, tubeWall, Rt - rho);
+                    const scalar rho = tube::axialDistance(q[k]);
+                    if (rho > VSMALL && Rt - rho < band)
+                    {
+                        add(q[k], tubeWall, Rt - rho);
+                    }
                 }
             }
         }
     }
+}
+
+
+Foam::List<Foam::scalar> Foam::rbd::cylinderContacts::rimAngles
+(
+    const pointField& points,
+    const scalar a
+)
+{
+    std::vector<scalar> angles;
+    for (const point& p : points)
+    {
+        if (mag(Foam::sqrt(sqr(p.x()) + sqr(p.y())) - a) <= 1e-9*a)
+        {
+            angles.push_back(Foam::atan2(p.y(), p.x()));
+        }
+    }
+    std::sort(angles.begin(), angles.end());
+    List<scalar> unique;
+    for (const scalar t : angles)
+    {
+        if (unique.empty() || t - unique.last() > 1e-9)
+        {
+            unique.append(t);
+        }
+    }
+    return unique;
 }
 
 

@@ -15,6 +15,12 @@ const Foam::wordList Foam::rbd::simulationControls::contactModels
 });
 
 
+const Foam::wordList Foam::rbd::simulationControls::restingFrictions
+({
+    "coupled", "staggered"
+});
+
+
 const Foam::wordList Foam::rbd::simulationControls::presets
 ({
     "fast", "default", "accurate"
@@ -128,6 +134,10 @@ Foam::rbd::simulationControls::simulationControls
     (
         getChoiceOrDefault(d, "contactModel", "auto", contactModels)
     ),
+    restingFriction
+    (
+        getChoiceOrDefault(d, "restingFriction", "coupled", restingFrictions)
+    ),
     preset(d.getOrDefault<word>("preset", "default")),
     dict(d)
 {
@@ -139,7 +149,7 @@ Foam::rbd::simulationControls::simulationControls
         "sleepVelocity", "sleepTime", "wakeVelocity",
         "settleTime", "settleEnergy", "logInterval", "lcpSolver",
         "restingCompliance",
-        "contactModel", "preset"
+        "contactModel", "restingFriction", "preset"
     };
     // <name>Coeffs of every LCP solver there is
     known.append(lcpSolver::coeffsNames());
@@ -208,6 +218,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("logInterval", logInterval);
     os.writeEntry("restingCompliance", restingCompliance);
     os.writeEntry("contactModel", contactModel);
+    os.writeEntry("restingFriction", restingFriction);
 }
 
 

@@ -76,6 +76,7 @@ Foam::rbd::world::world
     meshes_(),
     hullRadius_(0),
     hullHalfHeight_(0),
+    hullRimAngles_(),
     bodies_(),
     fixed_(),
     slowTime_(),
@@ -91,7 +92,11 @@ Foam::rbd::world::world
         controls.collisionTolerance,
         controls.wakeVelocity
     ),
-    resting_(controls.dict, controls.restingCompliance),
+    resting_
+    (
+        controls.dict, controls.restingCompliance,
+        controls.restingFriction == "coupled"
+    ),
     contacts_(),
     F_(),
     tau_(),
@@ -119,6 +124,13 @@ Foam::rbd::world::world
             hullRadius_ = 0.5*s.diameter();
             hullHalfHeight_ = 0.5*s.height();
         }
+        if (hullRadius_ > 0)
+        {
+            hullRimAngles_ = cylinderContacts::rimAngles
+            (
+                shape_.mesh().points(), hullRadius_
+            );
+        }
     }
 
     Info<< "Narrow phase (contactModel " << controls.contactModel << "): ";
@@ -126,9 +138,18 @@ Foam::rbd::world::world
     {
         Info<< "triangle meshes (" << shape_.mesh().nFaces()
             << " faces, " << meshes_->bvh().nodes().size()
-            << " tree nodes) between pellets, "
-            << (hullRadius_ > 0 ? "exact " + shape_.type() : word("mesh"))
-            << " contacts with the container" << endl;
+            << " tree nodes) between pellets, ";
+        if (hullRadius_ > 0)
+        {
+            Info<< "exact " << shape_.type() << " contacts (rims: polygons"
+                << " of " << hullRimAngles_.size() << " vertices, as the"
+                << " mesh)";
+        }
+        else
+        {
+            Info<< "mesh contacts";
+        }
+        Info<< " with the container" << endl;
     }
     else
     {
@@ -211,7 +232,7 @@ void Foam::rbd::world::pelletContainer(const label i)
         cylinderContacts::cylinderTube
         (
             i, bodies_[i], hullRadius_, hullHalfHeight_, tube_, band_,
-            contacts_
+            contacts_, hullRimAngles_
         );
     }
     else

@@ -179,4 +179,74 @@ TEST(restingCompliance, leavesSphereContactsExact)
 }
 
 
+namespace
+{
+    //- A cylinder standing on its flat face on a plane tilted by 20
+    //  degrees, mu 0.5 (tan 20 deg = 0.36: it sticks), touching at six
+    //  rim points: the velocity one step of the resultant of gravity and
+    //  all contact forces gives its contact points [m/s]; the normal
+    //  forces in phi [N]
+    scalar inclineResidual(const bool coupled, List<scalar>& phi)
+    {
+        const scalar tilt = 20*M_PI/180;
+        const vector n(Foam::sin(tilt), 0, Foam::cos(tilt));
+        const vector e1(Foam::cos(tilt), 0, -Foam::sin(tilt));
+        const vector e2(0, 1, 0);
+        const point x(a*n);
+
+        List<rigidBody> bs(1);
+        bs[0] = rigidBody(m, Ib, x, quaternion(vector(0, 1, 0), tilt), true);
+        DynamicList<contact> cs;
+        for (label k = 0; k < 6; ++k)
+        {
+            const scalar angle = 2*M_PI*(k + 0.3)/6;
+            contact c;
+            c.i = 0;
+            c.k = tubeBottom;
+            c.n = n;
+            c.mu = 0.5;
+            c.p = a*(Foam::cos(angle)*e1 + Foam::sin(angle)*e2);
+            c.ri = c.p - x;
+            c.rk = c.p;
+            cs.append(c);
+        }
+
+        const restingContactSolver rs(rbdTest::parseDict(""), 1e-5, coupled);
+        List<vector> Fs(1, vector(0, 0, -m*g));
+        List<vector> taus(1, Zero);
+        rs.solve(bs, cs, boolList(1, false), h, Fs, taus);
+        phi = rs.normalForces();
+        const vector dv(h*Fs[0]/m);
+        const vector dOmega(h*(bs[0].invInertia() & taus[0]));
+        return mag(dv) + a*mag(dOmega);
+    }
+}
+
+
+TEST(restingFriction, holdsACylinderOnAnInclineForTheForcesApplied)
+{
+    // The friction changes the normal forces (its torque loads the lower
+    // rim), so friction found for the frictionless normal forces does not
+    // hold the cylinder; normal forces and friction found together do:
+    // the resultant of gravity and all contact forces vanishes, and no
+    // contact pulls
+    List<scalar> phi;
+    EXPECT_LT(inclineResidual(true, phi), 1e-6);
+    for (const scalar p : phi)
+    {
+        EXPECT_GE(p, 0);
+    }
+}
+
+
+TEST(restingFriction, staggeredLeavesTheInclineUnbalanced)
+{
+    // restingFriction staggered (friction for the frictionless normal
+    // forces, then the normal forces again): the known defect, 21 % of the
+    // weight left unbalanced (about 2 mm/s per 1 ms step)
+    List<scalar> phi;
+    EXPECT_GT(inclineResidual(false, phi), 1e-3);
+}
+
+
 // ************************************************************************* //

@@ -6,6 +6,7 @@
 #include "cylinderContacts.H"
 #include "meshContacts.H"
 #include "pelletMeshes.H"
+#include <random>
 
 using namespace Foam;
 using namespace Foam::rbd;
@@ -173,5 +174,91 @@ TEST(cylinderContacts, meshAndExactContactsAgreeOnTheFloor)
         EXPECT_LE(mesh.size(), 6) << "tilt " << tilt;
         EXPECT_GE(minGap(mesh), minGap(exact) - 1e-12) << "tilt " << tilt;
         EXPECT_LE(minGap(mesh), minGap(exact) + sagitta) << "tilt " << tilt;
+    }
+}
+
+
+TEST(cylinderContacts, polygonalRimsGiveTheMeshsDeepestVertices)
+{
+    // With the rim vertices of the mesh, the contacts are exact for the
+    // mesh: on the floor and against the wall, at every orientation tried,
+    // the deepest contact is the mesh's deepest vertex; a cylinder lying
+    // on a side face touches at the four corners of that face, and one
+    // turned by half a segment (on an edge of its polygon) at two points
+    const triMesh m(pelletMeshes::cylinder(d, h, 300));
+    const List<scalar> angles(cylinderContacts::rimAngles(m.points(), a));
+    ASSERT_GE(angles.size(), 16);
+    for (label k = 1; k < angles.size(); ++k)
+    {
+        EXPECT_GT(angles[k], angles[k - 1]);
+    }
+    const scalar Rt = 0.02;
+    const tube container(2*Rt, 1, 0.6, 0.6);
+
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-1, 1);
+    for (label trial = 0; trial < 20; ++trial)
+    {
+        const vector axis(U(rng), U(rng), U(rng));
+        const quaternion q(axis/mag(axis), M_PI*U(rng));
+        const tmp<pointField> tp = m.transformedPoints(tensor(q.R()), Zero);
+        const scalar zLow = min(tp().component(vector::Z));
+        scalar rhoHigh = 0;
+        const point x(Rt - 0.5*d - 1e-4, 0, -zLow + 1e-5);
+        for (const point& p : tp())
+        {
+            rhoHigh = max(rhoHigh, tube::axialDistance(p + x));
+        }
+
+        const rigidBody bd(body(x, q));
+        DynamicList<contact> cs;
+        cylinderContacts::cylinderTube
+        (
+            0, bd, a, b, container, band, cs, angles
+        );
+        scalar floorGap = GREAT, wallGap = GREAT;
+        for (const contact& c : cs)
+        {
+            if (c.k == tubeBottom)
+            {
+                floorGap = min(floorGap, c.gap);
+            }
+            else
+            {
+                wallGap = min(wallGap, c.gap);
+            }
+        }
+        EXPECT_NEAR(floorGap, 1e-5, 1e-12) << "trial " << trial;
+        EXPECT_NEAR(wallGap, Rt - rhoHigh, 1e-12) << "trial " << trial;
+    }
+
+    // Lying on a side face (the face between the first two rim vertices
+    // facing down), then turned by half a segment about the axis
+    const scalar theta = 0.5*(angles[0] + angles[1]);
+    const scalar apothem = a*Foam::cos(0.5*(angles[1] - angles[0]));
+    for (const scalar turn : {0.0, 0.5*(angles[1] - angles[0])})
+    {
+        // Body z along the world x axis, the face's normal direction
+        // (theta + turn in the body frame) down
+        const quaternion lie(vector(0, 1, 0), 0.5*M_PI);
+        const vector down
+        (
+            lie.R()
+          & vector(Foam::cos(theta + turn), Foam::sin(theta + turn), 0)
+        );
+        const scalar spin = Foam::atan2(down.y(), -down.z());
+        const quaternion q(quaternion(vector(1, 0, 0), spin)*lie);
+        const scalar z = turn == 0 ? apothem : a;
+        const rigidBody bd(body(point(0, 0, z + 1e-9), q));
+        DynamicList<contact> cs;
+        cylinderContacts::cylinderTube
+        (
+            0, bd, a, b, container, 1e-6, cs, angles
+        );
+        EXPECT_EQ(cs.size(), turn == 0 ? 4 : 2) << "turn " << turn;
+        for (const contact& c : cs)
+        {
+            EXPECT_NEAR(c.gap, 1e-9, 1e-12) << "turn " << turn;
+        }
     }
 }

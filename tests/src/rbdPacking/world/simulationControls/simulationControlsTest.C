@@ -28,6 +28,7 @@ TEST(simulationControls, defaults)
     EXPECT_DOUBLE_EQ(c.contactTolerance, 1e-4);
     EXPECT_DOUBLE_EQ(c.sleepVelocity, 0.001);
     EXPECT_DOUBLE_EQ(c.wakeVelocity, 0.3);
+    EXPECT_EQ(c.restingFriction, "coupled");
 }
 
 
@@ -206,6 +207,27 @@ TEST(simulationControlsDeath, unknownPresetListsTheAllowedOnes)
         rbd::simulationControls(parse("preset quick;")),
         ::testing::ExitedWithCode(1),
         "preset(.|\n)*quick(.|\n)*fast(.|\n)*default(.|\n)*accurate"
+    );
+}
+
+
+TEST(simulationControls, restingFrictionIsEchoed)
+{
+    const rbd::simulationControls c(parse("restingFriction staggered;"));
+    EXPECT_EQ(c.restingFriction, "staggered");
+    OStringStream os;
+    c.write(os);
+    EXPECT_EQ(parse(os.str()).get<word>("restingFriction"), "staggered");
+}
+
+
+TEST(simulationControlsDeath, unknownRestingFrictionListsTheAllowedOnes)
+{
+    EXPECT_EXIT
+    (
+        rbd::simulationControls(parse("restingFriction exact;")),
+        ::testing::ExitedWithCode(1),
+        "restingFriction(.|\n)*exact(.|\n)*coupled(.|\n)*staggered"
     );
 }
 

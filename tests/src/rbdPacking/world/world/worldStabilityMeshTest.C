@@ -572,16 +572,15 @@ TEST_P(cylinderOntoACylinder, lyingOnItsSide)
     if (std::string(d.name) == "rimOnRim")
     {
         // Known gap (not in the narrow phase): the upper cylinder bounces
-        // off onto the floor and spins on its rim like Euler's disk, and
-        // the exact rim-floor contact (cylinderContacts: the lowest point
-        // of the rim, not a material point) is held by the resting solve
-        // as if it were one, whose centripetal acceleration omega x (omega
-        // x r) includes the spin about the cylinder's axis, which does not
-        // move the lowest point: the rim sinks 0.3-1 um per step, the
-        // overlap correction lifts it, and the spin gains energy (measured:
-        // 1.3e-4 J fed in over 3 s, the kinetic energy rising from 1.3e-5
-        // to 2.6e-5 J while the cylinder rises to 6.9 mm; it falls flat at
-        // 3.5 s and sleeps at 5.5 s). The invariants hold meanwhile.
+        // off onto the floor and spins on its rim like Euler's disk. With
+        // circular rims the rim-floor contact was the lowest point of the
+        // circle, not a material point, held by the resting solve as if
+        // it were one: the rim sank 0.3-1 um per step, the overlap
+        // correction lifted it, and the spin gained energy (1.3e-4 J fed
+        // in over 3 s; it fell flat at 3.5 s and slept at 5.5 s). The
+        // rims are now the mesh's polygons (vertices: material points),
+        // and it still does not settle by 4 s (not diagnosed again). The
+        // invariants hold meanwhile.
         m.runUntil(3);
         m.report(d.name);
         m.expectHealthy(d.name);
