@@ -29,9 +29,9 @@ Cache
     peak memory, exit status, the git commit and the date. A rerun runs
     only the cases without a row (or, with --force, all; with --rerun
     REGEX, the matching ones; with --stale, those run at another commit).
-    The run directories keep the log, the summary and the profiles; the
-    STL and the CFD case files are deleted after the run (--keep-files
-    keeps them).
+    The run directories keep the log, the summary, the profiles and
+    constant/triSurface/pellets.stl; the other STL and the CFD case files
+    are deleted after the run (--keep-files keeps them).
 
 Environment
     rbdPackBed is taken from this repository's etc/bashrc (sourced once),
@@ -192,12 +192,36 @@ def pelletBed(shape, tubeDiameter, seed=1, fillHeight=None, number=None,
     return d
 
 
+def readBinaryStlVertices(path):
+    """The vertices (n x 3, float) of the triangles of a binary STL file,
+    or None if the file is not binary STL."""
+    import numpy as np
+    raw = Path(path).read_bytes()
+    if len(raw) < 84:
+        return None
+    n = int(np.frombuffer(raw[80:84], dtype='<u4')[0])
+    if len(raw) != 84 + 50 * n:
+        return None
+    rec = np.dtype([('normal', '<f4', 3), ('v', '<f4', (3, 3)),
+                    ('attr', '<u2')])
+    tris = np.frombuffer(raw[84:], dtype=rec, count=n)
+    return tris['v'].reshape(-1, 3).astype(float)
+
+
 def protrusion(caseDir, D, H, tubeDiameter, tubeHeight, samples=720):
     """Per pellet of caseDir's pellets.csv, the largest distance [m] by
-    which its exact outer cylinder (diameter D, height H, axis the body z
-    axis; rims sampled at `samples` points) crosses the tube wall, the
-    floor or the tube's top (negative: inside; inf for a NaN pose), as a
-    numpy array. None without pellets.csv."""
+    which it crosses the tube wall, the floor or the tube's top (negative:
+    inside; inf for a NaN pose), as a numpy array. None without
+    pellets.csv.
+
+    Measured on the pellet meshes the packing simulated and wrote
+    (constant/triSurface/pellets.stl, binary; each vertex assigned to the
+    pellet whose centre is nearest): the exact tube contacts of cylinders
+    and rings hold the vertices of the meshes' rim polygons, and the
+    circle through them crosses the wall by up to the sagitta of a rim
+    segment. Without a binary pellets.stl: the exact outer cylinder
+    (diameter D, height H, axis the body z axis; rims sampled at
+    `samples` points)."""
     import numpy as np
     path = Path(caseDir) / 'postProcessing' / 'rbdPackBed' / 'pellets.csv'
     if not path.exists():
@@ -211,6 +235,24 @@ def protrusion(caseDir, D, H, tubeDiameter, tubeHeight, samples=720):
     q = np.stack([data['qw'], data['qx'], data['qy'], data['qz']],
                  axis=1).astype(float)
     bad = ~np.all(np.isfinite(np.hstack([c, q])), axis=1)
+
+    def beyond(pts):
+        radial = np.sqrt(pts[..., 0]**2 + pts[..., 1]**2) - tubeDiameter / 2
+        return np.maximum(np.maximum(radial, -pts[..., 2]),
+                          pts[..., 2] - tubeHeight)
+
+    stl = Path(caseDir) / 'constant' / 'triSurface' / 'pellets.stl'
+    verts = readBinaryStlVertices(stl) if stl.exists() else None
+    if verts is not None and not bad.any():
+        worst = np.full(len(c), -np.inf)
+        out = beyond(verts)
+        for start in range(0, len(verts), 20000):
+            chunk = verts[start:start + 20000]
+            owner = np.argmin(((chunk[:, None, :] - c[None, :, :])**2)
+                              .sum(axis=2), axis=1)
+            np.maximum.at(worst, owner, out[start:start + 20000])
+        return worst
+
     q /= np.linalg.norm(q, axis=1, keepdims=True)
     w, x, y, z = q.T
     # body axes in the world: columns of the rotation matrix
@@ -225,11 +267,7 @@ def protrusion(caseDir, D, H, tubeDiameter, tubeHeight, samples=720):
            + np.sin(theta)[None, :, None] * v[:, None, :]) * (D / 2)
     pts = np.concatenate([c[:, None, :] + s * (H / 2) * a[:, None, :] + rim
                           for s in (-1, 1)], axis=1)
-    radial = (np.sqrt(pts[..., 0]**2 + pts[..., 1]**2).max(axis=1)
-              - tubeDiameter / 2)
-    below = -pts[..., 2].min(axis=1)
-    above = pts[..., 2].max(axis=1) - tubeHeight
-    worst = np.maximum(np.maximum(radial, below), above)
+    worst = beyond(pts).max(axis=1)
     worst[bad] = np.inf
     return worst
 
@@ -729,8 +767,15 @@ class Benchmark:
         row['date'] = datetime.datetime.now().isoformat(timespec='seconds')
         row['dir'] = str(repoPath(d))
         if not self.args.keepFiles and case.copyDir is None:
+            # pellets.stl stays: the pellets as they packed, whose
+            # vertices the protrusion check measures (protrusion)
+            stl = d / 'constant' / 'triSurface' / 'pellets.stl'
+            kept = stl.read_bytes() if stl.exists() else None
             for sub in ('constant', '0'):
                 shutil.rmtree(d / sub, ignore_errors=True)
+            if kept is not None:
+                stl.parent.mkdir(parents=True)
+                stl.write_bytes(kept)
             for f in (d / 'system').iterdir():
                 if f.name != 'packingDict':
                     f.unlink()
