@@ -478,6 +478,12 @@ Foam::rbd::restingContactSolver::solve
         std::vector<std::pair<label, vector>> dirs;
         std::vector<label> normalRow(nc);
         std::vector<label> tangentRow(nc, -1);
+
+        // Per contact with friction: the relative velocity v0 the step
+        // starts with, and the relative acceleration under the external
+        // forces alone (the tangent rows' B below)
+        std::vector<vector> v0(nc, Zero);
+        std::vector<vector> aExt(nc, Zero);
         for (label a = 0; a < nc; ++a)
         {
             const contact& c = contacts[cs[a]];
@@ -485,9 +491,11 @@ Foam::rbd::restingContactSolver::solve
             dirs.emplace_back(cs[a], c.n);
             if (c.mu > 0)
             {
+                v0[a] = collisionResolver::relativeVelocity(c, bodies, fixed);
+                aExt[a] = relativeAcceleration(c, bodies, fixed, Fext, tauExt);
                 const vector vEnd
                 (
-                    collisionResolver::relativeVelocity(c, bodies, fixed)
+                    v0[a]
                   + h*relativeAcceleration(c, bodies, fixed, Ftot, tauTot)
                 );
                 vector t1(vEnd - (vEnd & c.n)*c.n);
@@ -544,17 +552,6 @@ Foam::rbd::restingContactSolver::solve
         // and no work (midpoint rule, constant force: the work is f . (v0
         // + v1) h/2)
         std::vector<scalar> beta(nc, 0);
-        std::vector<vector> v0(nc, Zero);
-        std::vector<vector> aExt(nc, Zero);
-        for (label a = 0; a < nc; ++a)
-        {
-            if (tangentRow[a] >= 0)
-            {
-                const contact& c = contacts[cs[a]];
-                v0[a] = collisionResolver::relativeVelocity(c, bodies, fixed);
-                aExt[a] = relativeAcceleration(c, bodies, fixed, Fext, tauExt);
-            }
-        }
         Eigen::VectorXd B(n);
         auto setB = [&]()
         {
@@ -728,80 +725,84 @@ Foam::rbd::restingContactSolver::solve
             }
         }
 
-        // Friction from the predicted slip at the end of the step, clamped
-        // to mu phi (eq 9); two Gauss-Seidel sweeps for coupled contacts
-        List<vector> Ftot(Fext);
-        List<vector> tauTot(tauExt);
-        forAll(contacts, ci)
+        // The staggered solve, for the islands that need it
+        if (!staggeredRoots.empty())
         {
-            if (staggered[ci])
-            {
-                applyForce
-                (
-                    contacts[ci], phiAll[ci]*contacts[ci].n, bodies, fixed,
-                    Ftot, tauTot
-                );
-            }
-        }
-
-        for (label sweep = 0; sweep < 2 && staggeredRoots.size(); ++sweep)
-        {
+            // Friction from the predicted slip at the end of the step, clamped
+            // to mu phi (eq 9); two Gauss-Seidel sweeps for coupled contacts
+            List<vector> Ftot(Fext);
+            List<vector> tauTot(tauExt);
             forAll(contacts, ci)
             {
-                const contact& c = contacts[ci];
-                const scalar limit = c.mu*phiAll[ci];
-                if (!staggered[ci] || limit <= 0)
+                if (staggered[ci])
                 {
-                    continue;
+                    applyForce
+                    (
+                        contacts[ci], phiAll[ci]*contacts[ci].n, bodies, fixed,
+                        Ftot, tauTot
+                    );
                 }
-                vector& f = friction[ci];
-
-                // Remove this contact's friction, then predict the slip
-                applyForce(c, -f, bodies, fixed, Ftot, tauTot);
-                applyForce(c, -f, bodies, fixed, Ffric, tauFric);
-
-                const vector vRel
-                (
-                    collisionResolver::relativeVelocity(c, bodies, fixed)
-                  + h*relativeAcceleration(c, bodies, fixed, Ftot, tauTot)
-                );
-                const vector vt(vRel - (vRel & c.n)*c.n);
-                const scalar slip = mag(vt);
-
-                f = Zero;
-                if (slip > VSMALL)
-                {
-                    const vector t(-vt/slip);
-                    const scalar fStop =
-                        slip
-                       /(h*collisionResolver::effectiveInvMass
-                        (
-                            c, t, bodies, fixed
-                        ));
-                    f = min(limit, fStop)*t;
-                }
-
-                applyForce(c, f, bodies, fixed, Ftot, tauTot);
-                applyForce(c, f, bodies, fixed, Ffric, tauFric);
             }
-        }
 
-        // Pass 2: normal forces with friction in B
-        List<vector> Fb(Fext);
-        List<vector> tb(tauExt);
-        forAll(Fb, b)
-        {
-            Fb[b] += Ffric[b];
-            tb[b] += tauFric[b];
-        }
-        for (const label r : staggeredRoots)
-        {
-            Eigen::VectorXd phi;
-            solveIsland(islandOf[r], Fb, tb, phi);
-            const std::vector<label>& island = islandOf[r];
-            for (size_t a = 0; a < island.size(); ++a)
+            for (label sweep = 0; sweep < 2; ++sweep)
             {
-                phiAll[island[a]] = phi(a);
+                forAll(contacts, ci)
+                {
+                    const contact& c = contacts[ci];
+                    const scalar limit = c.mu*phiAll[ci];
+                    if (!staggered[ci] || limit <= 0)
+                    {
+                        continue;
+                    }
+                    vector& f = friction[ci];
+
+                    // Remove this contact's friction, then predict the slip
+                    applyForce(c, -f, bodies, fixed, Ftot, tauTot);
+                    applyForce(c, -f, bodies, fixed, Ffric, tauFric);
+
+                    const vector vRel
+                    (
+                        collisionResolver::relativeVelocity(c, bodies, fixed)
+                      + h*relativeAcceleration(c, bodies, fixed, Ftot, tauTot)
+                    );
+                    const vector vt(vRel - (vRel & c.n)*c.n);
+                    const scalar slip = mag(vt);
+
+                    f = Zero;
+                    if (slip > VSMALL)
+                    {
+                        const vector t(-vt/slip);
+                        const scalar fStop =
+                            slip
+                           /(h*collisionResolver::effectiveInvMass
+                            (
+                                c, t, bodies, fixed
+                            ));
+                        f = min(limit, fStop)*t;
+                    }
+
+                    applyForce(c, f, bodies, fixed, Ftot, tauTot);
+                    applyForce(c, f, bodies, fixed, Ffric, tauFric);
+                }
+            }
+
+            // Pass 2: normal forces with friction in B
+            List<vector> Fb(Fext);
+            List<vector> tb(tauExt);
+            forAll(Fb, b)
+            {
+                Fb[b] += Ffric[b];
+                tb[b] += tauFric[b];
+            }
+            for (const label r : staggeredRoots)
+            {
+                Eigen::VectorXd phi;
+                solveIsland(islandOf[r], Fb, tb, phi);
+                const std::vector<label>& island = islandOf[r];
+                for (size_t a = 0; a < island.size(); ++a)
+                {
+                    phiAll[island[a]] = phi(a);
+                }
             }
         }
     }

@@ -5,6 +5,7 @@
 #include "blockPivotingLCP.H"
 #include "baraffLCP.H"
 #include "lcpBodySpace.H"
+#include "lcpActiveSet.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -296,7 +297,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     }
     const orderingCache::permutation& order =
         body.valid() ? natural : orderings_.order(A);
-    Eigen::VectorXd Einv;
+    const Eigen::VectorXd minusB(-b);
 
     std::vector<label> pos(n), members, infeasible;
     std::vector<Eigen::Triplet<double>> triplets;
@@ -330,72 +331,17 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             }
         }
 
-        z.setZero();
-        const label m = members.size();
-        if (m && body.valid())
+        // (one factorisation; on failure, not expected as A_FF + eps I is
+        // positive definite, the interior point and the fallback take over)
+        if
+        (
+            !solveActiveSet
+            (
+                A, body.get(), members, pos, eps, minusB, ldlt, triplets, z
+            )
+        )
         {
-            Einv.setZero(n);
-            Eigen::VectorXd rhs(Eigen::VectorXd::Zero(n));
-            for (const label i : members)
-            {
-                Einv(i) = 1/(factors.s(i) + eps);
-                rhs(i) = -b(i);
-            }
-            if (!body->factorise(Einv))
-            {
-                break;
-            }
-            z = body->apply(rhs);
-            for (label refine = 0; refine < 2; ++refine)
-            {
-                // The residual of A_FF f_F = -b_F (0 off F, where apply
-                // gives 0 whatever it is given)
-                z += body->apply(rhs - body->product(z));
-            }
-        }
-        else if (m)
-        {
-            triplets.clear();
-            for (label k = 0; k < m; ++k)
-            {
-                const label j = members[k];
-                for (sparseMatrix::InnerIterator it(A, j); it; ++it)
-                {
-                    const label r = pos[it.row()];
-                    if (r >= 0)
-                    {
-                        triplets.emplace_back(r, k, it.value());
-                    }
-                }
-                triplets.emplace_back(k, k, eps);
-            }
-            sparseMatrix AFF(m, m);
-            AFF.setFromTriplets(triplets.begin(), triplets.end());
-            ldlt.compute(AFF);
-            if (ldlt.info() != Eigen::Success)
-            {
-                // Not expected (A_FF + eps I is positive definite): leave
-                // it to the interior point and the fallback
-                break;
-            }
-            Eigen::VectorXd rhs(m);
-            for (label k = 0; k < m; ++k)
-            {
-                rhs(k) = -b(members[k]);
-            }
-            // Iterative refinement with the same factor: the solution of
-            // A_FF f = -b_F itself where that system is consistent (the
-            // compliance eps f would otherwise let a loaded stack sink)
-            Eigen::VectorXd zF(ldlt.solve(rhs));
-            for (label refine = 0; refine < 2; ++refine)
-            {
-                const Eigen::VectorXd r(rhs - (AFF*zF - eps*zF));
-                zF += ldlt.solve(r);
-            }
-            for (label k = 0; k < m; ++k)
-            {
-                z(members[k]) = zF(k);
-            }
+            break;
         }
         w = (body.valid() ? body->product(z) : Eigen::VectorXd(A*z)) + b;
         result.iterations = iter + 1;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "boxedBlockPivoting.H"
+#include "lcpActiveSet.H"
 #include "autoPtr.H"
 
 #pragma GCC diagnostic push
@@ -10,8 +11,6 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/OrderingMethods>
 #pragma GCC diagnostic pop
-
-#include <limits>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -266,9 +265,14 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
     label step = 0;
     for (; step < interiorPointIterations_; ++step)
     {
+        // The iterate clipped to its box (x - lo = s1 > 0 and hi - x = s2
+        // > 0 up to round-off: w serves unless clipping moved it)
         const Eigen::VectorXd w(product(x) + b);
         const Eigen::VectorXd xc(x.cwiseMax(lo).cwiseMin(hi));
-        const scalar v = violation(product(xc) + b, b, lo, hi, xc);
+        const scalar v =
+            xc == x
+          ? violation(w, b, lo, hi, x)
+          : violation(product(xc) + b, b, lo, hi, xc);
         if (v <= tolerance_)
         {
             break;
@@ -561,65 +565,16 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
         {
             rFull -= product(xFixed);
         }
-        const label m = members.size();
-
-        Eigen::VectorXd z(Eigen::VectorXd::Zero(n));
-        if (m && body)
+        Eigen::VectorXd z;
+        if
+        (
+            !solveActiveSet
+            (
+                A, body, members, pos, eps, rFull, ldlt, triplets, z
+            )
+        )
         {
-            Eigen::VectorXd Einv(Eigen::VectorXd::Zero(n));
-            Eigen::VectorXd rhs(Eigen::VectorXd::Zero(n));
-            for (const label i : members)
-            {
-                Einv(i) = 1/(body->compliance()(i) + eps);
-                rhs(i) = rFull(i);
-            }
-            if (!body->factorise(Einv))
-            {
-                break;
-            }
-            z = body->apply(rhs);
-            for (label refine = 0; refine < 2; ++refine)
-            {
-                z += body->apply(rhs - body->product(z));
-            }
-        }
-        else if (m)
-        {
-            triplets.clear();
-            for (label k = 0; k < m; ++k)
-            {
-                const label j = members[k];
-                for (sparseMatrix::InnerIterator it(A, j); it; ++it)
-                {
-                    const label r = pos[it.row()];
-                    if (r >= 0)
-                    {
-                        triplets.emplace_back(r, k, it.value());
-                    }
-                }
-                triplets.emplace_back(k, k, eps);
-            }
-            sparseMatrix AFF(m, m);
-            AFF.setFromTriplets(triplets.begin(), triplets.end());
-            ldlt.compute(AFF);
-            if (ldlt.info() != Eigen::Success)
-            {
-                break;
-            }
-            Eigen::VectorXd rhs(m);
-            for (label k = 0; k < m; ++k)
-            {
-                rhs(k) = rFull(members[k]);
-            }
-            Eigen::VectorXd zF(ldlt.solve(rhs));
-            for (label refine = 0; refine < 2; ++refine)
-            {
-                zF += ldlt.solve(Eigen::VectorXd(rhs - (AFF*zF - eps*zF)));
-            }
-            for (label k = 0; k < m; ++k)
-            {
-                z(members[k]) = zF(k);
-            }
+            break;
         }
         x = xFixed + z;
         w = product(x) + b;
@@ -718,7 +673,6 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
         {
             x = xi;
             bestViolation = vi;
-            result.converged = vi <= tolerance_;
             const scalar xRef = max(xi.cwiseAbs().maxCoeff(), VSMALL);
             for (label i = 0; i < n; ++i)
             {
