@@ -9,6 +9,7 @@
 #include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
 #include "boxedBlockPivoting.H"
 
+#include <iostream>
 #include <limits>
 
 using namespace Foam;
@@ -223,6 +224,61 @@ TEST(boxedBlockPivoting, blockPivotingMatchesEnumeration)
     // Block exchanges may cycle (then the interior point takes over); on
     // these small problems they rarely do
     EXPECT_GE(solved, 36);
+}
+
+
+TEST(boxedBlockPivoting, singleExchangesBreakTheCycles)
+{
+    // Redundant islands (8 to 12 contacts on at most three spheres:
+    // degenerate, as heaps are) where block exchanges cycle. Pivoting
+    // alone, without and with Murty's single exchanges; every answer
+    // counted as solved is checked here: within its box, w >= 0 at lo,
+    // w <= 0 at hi, w = 0 between
+    const rbd::boxedBlockPivoting blocks(1e-9, 1e-10, 100, 0, 0);
+    const rbd::boxedBlockPivoting singles(1e-9, 1e-10, 100, 0, 10);
+    rng gen(13);
+    label solvedBlocks = 0, solvedSingles = 0;
+    const int trials = 200;
+    for (int trial = 0; trial < trials; ++trial)
+    {
+        const boxedProblem q
+        (
+            randomFrictionProblem(gen, uniformInt(gen, 8, 12))
+        );
+        for (const bool single : {false, true})
+        {
+            std::vector<rbd::boxedBlockPivoting::side> sides;
+            Vec x;
+            const rbd::lcpResult r = (single ? singles : blocks).solve
+            (
+                q.p.A.sparseView(), rbd::lcpFactors(), q.p.b, q.lo, q.hi,
+                sides, x
+            );
+            if (!r.converged)
+            {
+                continue;
+            }
+            const Vec w(q.p.A*x + q.p.b);
+            const double xRef = x.cwiseAbs().maxCoeff();
+            const double wRef = q.p.b.cwiseAbs().maxCoeff();
+            for (int i = 0; i < x.size(); ++i)
+            {
+                EXPECT_GE(x(i), q.lo(i)) << trial;
+                EXPECT_LE(x(i), q.hi(i)) << trial;
+                const double toLo = (x(i) - q.lo(i))/xRef;
+                const double toHi = (q.hi(i) - x(i))/xRef;
+                EXPECT_LE(std::min(toLo, 1.0)*std::max(w(i), 0.0)/wRef, 1e-8)
+                    << trial;
+                EXPECT_LE(std::min(toHi, 1.0)*std::max(-w(i), 0.0)/wRef, 1e-8)
+                    << trial;
+            }
+            ++(single ? solvedSingles : solvedBlocks);
+        }
+    }
+    std::cout << "pivoting alone solved " << solvedBlocks << " of " << trials
+        << " with block exchanges, " << solvedSingles
+        << " with single exchanges as well" << std::endl;
+    EXPECT_GT(solvedSingles, solvedBlocks);
 }
 
 
