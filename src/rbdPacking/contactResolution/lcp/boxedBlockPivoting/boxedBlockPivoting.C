@@ -538,7 +538,7 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
     label fewestSoFar = n + 1;
 
     // Judice and Pires' safeguard: when the count of infeasible variables
-    // has not fallen for three rounds, exchange one variable per round
+    // has not fallen for four rounds, exchange one variable per round
     // (Murty's rule: the infeasible one of largest index) until the count
     // falls below the fewest seen, then exchange blocks again. Stalled
     // single exchanges hand over to the interior point.
@@ -649,12 +649,12 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
         {
             --chances;
         }
-        else if (!single)
+        else if (!single && maxSingleExchanges_ > 0)
         {
             // The block exchanges cycle
             single = true;
         }
-        else if (++singleStall > maxSingleExchanges_)
+        else if (!single || ++singleStall >= maxSingleExchanges_)
         {
             break;
         }
