@@ -19,15 +19,13 @@ Foam::rbd::boxedBlockPivoting::boxedBlockPivoting
     const scalar tolerance,
     const scalar regularisation,
     const label maxIterations,
-    const label interiorPointIterations,
-    const label maxSingleExchanges
+    const label interiorPointIterations
 )
 :
     tolerance_(tolerance),
     regularisation_(regularisation),
     maxIterations_(maxIterations),
-    interiorPointIterations_(interiorPointIterations),
-    maxSingleExchanges_(maxSingleExchanges)
+    interiorPointIterations_(interiorPointIterations)
 {}
 
 
@@ -537,15 +535,8 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
     Eigen::VectorXd w(n), best(x);
     label fewestSoFar = n + 1;
 
-    // Judice and Pires' safeguard: when the count of infeasible variables
-    // has not fallen for four rounds, exchange one variable per round
-    // (Murty's rule: the infeasible one of largest index) until the count
-    // falls below the fewest seen, then exchange blocks again. Stalled
-    // single exchanges hand over to the interior point.
     label fewest = n + 1;
     label chances = 3;
-    bool single = false;
-    label singleStall = 0;
 
     for (label iter = 0; iter < maxIterations_; ++iter)
     {
@@ -642,23 +633,17 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
         {
             fewest = nInfeasible;
             chances = 3;
-            single = false;
-            singleStall = 0;
         }
         else if (chances > 0)
         {
             --chances;
         }
-        else if (!single && maxSingleExchanges_ > 0)
+        else
         {
             // The block exchanges cycle
-            single = true;
-        }
-        else if (!single || ++singleStall >= maxSingleExchanges_)
-        {
             break;
         }
-        auto exchange = [&](const label i)
+        for (const label i : infeasible)
         {
             if (sides[i] != side::free)
             {
@@ -667,17 +652,6 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
             else
             {
                 sides[i] = x(i) < lo(i) ? side::lower : side::upper;
-            }
-        };
-        if (single)
-        {
-            exchange(infeasible.back());
-        }
-        else
-        {
-            for (const label i : infeasible)
-            {
-                exchange(i);
             }
         }
     }

@@ -305,10 +305,9 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
     // not met here in general. The runs are chaotic, and the tetrahedra's
     // acute edges make contacts that are taken too deep or missed (see
     // meshContacts.C): a run that is quiet can find a contact 0.4 mm
-    // deep in one step. Measured (% dpv): seeds 2-6 0.07-1.0 and 8.9 for
-    // seed 1 (before the boxed LCP's single exchanges: seeds 1-6
-    // 0.08-0.8 and 6.9 for seed 3; seeds 7-12 0.3-1.4 one build earlier);
-    // with the staggered friction of earlier versions seven of
+    // deep in one step. Measured (% dpv): seeds 1-6 0.08-0.8, and 6.9
+    // for seed 3; seeds 7-12 0.3-1.4 one build earlier (seed 3 then
+    // 6.7); with the staggered friction of earlier versions seven of
     // seeds 1-12 were above 2.5 (up to 10). Asserted: at most
     // one of seeds 1-6 above 2.5 % dpv (the known gap stated in the
     // README) and their median below 1 %; the other checks every run

@@ -9,7 +9,6 @@
 #include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
 #include "boxedBlockPivoting.H"
 
-#include <iostream>
 #include <limits>
 
 using namespace Foam;
@@ -224,74 +223,6 @@ TEST(boxedBlockPivoting, blockPivotingMatchesEnumeration)
     // Block exchanges may cycle (then the interior point takes over); on
     // these small problems they rarely do
     EXPECT_GE(solved, 36);
-}
-
-
-TEST(boxedBlockPivoting, singleExchangesBreakTheCycles)
-{
-    // Redundant islands (8 to 12 contacts on at most three spheres:
-    // degenerate, as heaps are) where block exchanges cycle. Pivoting
-    // alone, without and with Murty's single exchanges. A is positive
-    // definite (the compliance), so the solution is unique: every answer
-    // counted as solved must be the full solver's (interior point on),
-    // and that one must satisfy the conditions checked here (w >= 0 at
-    // lo, w <= 0 at hi, w = 0 between)
-    const rbd::boxedBlockPivoting blocks(1e-9, 1e-10, 100, 0, 0);
-    const rbd::boxedBlockPivoting singles(1e-9, 1e-10, 100, 0);
-    const rbd::boxedBlockPivoting full;
-    rng gen(13);
-    label solvedBlocks = 0, solvedSingles = 0;
-    const int trials = 200;
-    for (int trial = 0; trial < trials; ++trial)
-    {
-        const boxedProblem q
-        (
-            randomFrictionProblem(gen, uniformInt(gen, 8, 12))
-        );
-        std::vector<rbd::boxedBlockPivoting::side> sidesRef;
-        Vec xRef;
-        const rbd::lcpResult rRef = full.solve
-        (
-            q.p.A.sparseView(), rbd::lcpFactors(), q.p.b, q.lo, q.hi,
-            sidesRef, xRef
-        );
-        ASSERT_TRUE(rRef.converged) << trial;
-        const Vec w(q.p.A*xRef + q.p.b);
-        const double xScale = std::max(xRef.cwiseAbs().maxCoeff(), 1e-300);
-        const double wScale = q.p.b.cwiseAbs().maxCoeff();
-        for (int i = 0; i < xRef.size(); ++i)
-        {
-            const double toLo = (xRef(i) - q.lo(i))/xScale;
-            const double toHi = (q.hi(i) - xRef(i))/xScale;
-            EXPECT_LE(std::min(toLo, 1.0)*std::max(w(i), 0.0)/wScale, 1e-8)
-                << trial;
-            EXPECT_LE(std::min(toHi, 1.0)*std::max(-w(i), 0.0)/wScale, 1e-8)
-                << trial;
-        }
-
-        for (const bool single : {false, true})
-        {
-            std::vector<rbd::boxedBlockPivoting::side> sides;
-            Vec x;
-            const rbd::lcpResult r = (single ? singles : blocks).solve
-            (
-                q.p.A.sparseView(), rbd::lcpFactors(), q.p.b, q.lo, q.hi,
-                sides, x
-            );
-            if (!r.converged)
-            {
-                continue;
-            }
-            EXPECT_LE((x - xRef).cwiseAbs().maxCoeff(), 1e-6*xScale)
-                << trial << (single ? " single" : " blocks");
-            ++(single ? solvedSingles : solvedBlocks);
-        }
-    }
-    std::cout << "pivoting alone solved " << solvedBlocks << " of " << trials
-        << " with block exchanges, " << solvedSingles
-        << " with single exchanges as well" << std::endl;
-    EXPECT_GT(solvedSingles, solvedBlocks);
-    EXPECT_GE(solvedSingles, trials/8);
 }
 
 
