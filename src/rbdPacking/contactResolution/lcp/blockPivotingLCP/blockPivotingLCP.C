@@ -310,8 +310,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     // Judice-Pires: block exchanges while the number of infeasible
     // contacts falls (or within three chances); once they cycle, the
     // interior-point method takes over
-    label fewest = n + 1;
-    label chances = 3;
+    blockExchangeProgress progress(n);
 
     const label iterations =
         n <= fallbackSize_
@@ -374,16 +373,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         }
 
         const label nInfeasible = infeasible.size();
-        if (nInfeasible < fewest)
-        {
-            fewest = nInfeasible;
-            chances = 3;
-        }
-        else if (chances > 0)
-        {
-            --chances;
-        }
-        else
+        if (!progress.proceed(nInfeasible))
         {
             // The block exchanges cycle
             break;

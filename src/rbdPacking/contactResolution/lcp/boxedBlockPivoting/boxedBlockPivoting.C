@@ -535,8 +535,7 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
     Eigen::VectorXd w(n), best(x);
     label fewestSoFar = n + 1;
 
-    label fewest = n + 1;
-    label chances = 3;
+    blockExchangeProgress progress(n);
 
     for (label iter = 0; iter < maxIterations_; ++iter)
     {
@@ -629,16 +628,7 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
             break;
         }
 
-        if (nInfeasible < fewest)
-        {
-            fewest = nInfeasible;
-            chances = 3;
-        }
-        else if (chances > 0)
-        {
-            --chances;
-        }
-        else
+        if (!progress.proceed(nInfeasible))
         {
             // The block exchanges cycle
             break;
