@@ -9,6 +9,7 @@
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "boundBox.H"
+#include "checkpoint.H"
 #include <memory>
 #include <unistd.h>
 
@@ -57,6 +58,9 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     dictName_(dict.name()),
     caseSettings_(),
     world_(),
+    packingDict_(dict),
+    state_(),
+    resumed_(false),
     settled_(false),
     wallTime_(0),
     finalOverlap_(0)
@@ -228,17 +232,19 @@ Foam::scalar Foam::rbd::packedBed::endTimeForLoading
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::label Foam::rbd::packedBed::releasePellets
-(
-    labelList& lastOfColumn,
-    label released
-)
+void Foam::rbd::packedBed::releasePellets()
 {
     const UList<rigidBody>& bodies = world_->bodies();
     const scalar clearance = loading_->clearance();
     const scalar rb = shape_->boundingRadius();
+    labelList& lastOfColumn = state_.lastOfColumn;
 
-    for (label c = 0; c < loading_->nColumns() && released < number_; ++c)
+    for
+    (
+        label c = 0;
+        c < loading_->nColumns() && state_.released < number_;
+        ++c
+    )
     {
         const point& slot = loading_->column(c);
         if
@@ -272,10 +278,85 @@ Foam::label Foam::rbd::packedBed::releasePellets
         }
 
         lastOfColumn[c] = world_->addBody(x, q);
-        ++released;
+        ++state_.released;
+    }
+}
+
+
+void Foam::rbd::packedBed::writeCheckpoint(const scalar wallTime) const
+{
+    const fileName file(checkpoint::path(runTime_.path()));
+    checkpoint::write
+    (
+        file,
+        packingDict_,
+        [&](stateWriter& out)
+        {
+            world_->writeState(out);
+            loading_->writeState(out);
+            out.putList(state_.lastOfColumn);
+            out.put(state_.released).put(state_.quietTime)
+               .put(state_.nextLog).put(state_.lastRelease)
+               .put(state_.warnedStall).put(state_.wallTime + wallTime);
+        }
+    );
+    Info<< "Checkpoint at t = " << world_->time() << " s ("
+        << state_.released << " pellets): "
+        << file.relative(runTime_.path()).c_str() << nl << endl;
+}
+
+
+void Foam::rbd::packedBed::resume()
+{
+    const fileName file(checkpoint::path(runTime_.path()));
+    checkpoint::read
+    (
+        file,
+        packingDict_,
+        dictName_,
+        [&](stateReader& in)
+        {
+            world_->readState(in);
+            loading_->readState(in);
+            in.getList(state_.lastOfColumn);
+            in.get(state_.released).get(state_.quietTime)
+              .get(state_.nextLog).get(state_.lastRelease)
+              .get(state_.warnedStall).get(state_.wallTime);
+        }
+    );
+
+    const label n = world_->bodies().size();
+    if
+    (
+        state_.lastOfColumn.size() != loading_->nColumns()
+     || state_.released != n || n > number_
+    )
+    {
+        FatalErrorInFunction
+            << "The checkpoint " << file.c_str() << " holds " << n << " pellets, "
+            << state_.released << " released from "
+            << state_.lastOfColumn.size() << " columns, for a packing of "
+            << number_ << " from " << loading_->nColumns()
+            << ": it is damaged." << nl
+            << "    Delete it and run without -resume." << exit(FatalError);
+    }
+    for (const label i : state_.lastOfColumn)
+    {
+        if (i < -1 || i >= n)
+        {
+            FatalErrorInFunction
+                << "The checkpoint " << file.c_str() << " is damaged (a column's "
+                << "last pellet " << i << " of " << n << ")." << nl
+                << "    Delete it and run without -resume."
+                << exit(FatalError);
+        }
     }
 
-    return released;
+    resumed_ = true;
+    Info<< "Resuming from " << file.relative(runTime_.path()).c_str() << " at t = "
+        << world_->time() << " s: " << n << " of " << number_
+        << " pellets released, " << world_->stats().steps << " steps, "
+        << state_.wallTime << " s of wall time so far" << nl << endl;
 }
 
 
@@ -719,24 +800,29 @@ void Foam::rbd::packedBed::run()
         10*Foam::sqrt(2*loading_->clearance()/ctrl.gravity)
     );
 
-    labelList lastOfColumn(loading_->nColumns(), -1);
-    label released = 0;
-    scalar quietTime = 0;
-    scalar nextLog = 0;
-    scalar lastRelease = 0;
-    bool warnedStall = false;
+    if (!resumed_)
+    {
+        state_ = runState();
+        state_.lastOfColumn.setSize(loading_->nColumns(), -1);
+    }
+    runState& st = state_;
     settled_ = false;
+
+    // Checkpoints by the wall time of this run: they do not change the
+    // state, so where they fall does not change the packing
+    const scalar checkpointInterval = ctrl.checkpointInterval;
+    scalar nextCheckpoint = checkpointInterval;
 
     Info<< "Packing " << number_ << ' ' << shape.type() << " pellets" << nl
         << endl;
 
     while (w.time() < ctrl.endTime - 1e-12)
     {
-        const label before = released;
-        released = releasePellets(lastOfColumn, released);
-        if (released > before)
+        const label before = st.released;
+        releasePellets();
+        if (st.released > before)
         {
-            lastRelease = w.time();
+            st.lastRelease = w.time();
         }
 
         const scalar tOuter =
@@ -752,48 +838,67 @@ void Foam::rbd::packedBed::run()
         const scalar KE = w.kineticEnergy();
         if
         (
-            released < number_ && !warnedStall
-         && w.time() - lastRelease > stallTime
+            st.released < number_ && !st.warnedStall
+         && w.time() - st.lastRelease > stallTime
         )
         {
             WarningInFunction
                 << "No pellet could be released for " << stallTime
                 << " s: the bed has reached the release height with "
-                << released << " of " << number_ << " pellets" << endl;
-            warnedStall = true;
+                << st.released << " of " << number_ << " pellets" << endl;
+            st.warnedStall = true;
         }
         // The kinetic-energy test once every pellet is in, or once no more
         // can be released (the bed settles with fewer pellets)
-        if (released == number_ || warnedStall)
+        if (st.released == number_ || st.warnedStall)
         {
-            quietTime = (KE <= ctrl.settleEnergy*Eref) ? quietTime + ctrl.deltaT
-                                                        : 0;
-            if (quietTime >= ctrl.settleTime - 1e-12)
+            st.quietTime =
+                (KE <= ctrl.settleEnergy*Eref) ? st.quietTime + ctrl.deltaT
+                                               : 0;
+            if (st.quietTime >= ctrl.settleTime - 1e-12)
             {
                 settled_ = true;
             }
         }
 
-        if (w.time() >= nextLog - 1e-12 || settled_)
+        if (w.time() >= st.nextLog - 1e-12 || settled_)
         {
-            Info<< "Time = " << w.time() << " s  pellets " << released
+            Info<< "Time = " << w.time() << " s  pellets " << st.released
                 << '/' << number_ << "  moving " << w.nMoving(moving)
                 << "  sleeping " << w.nSleeping()
                 << "  KE = " << KE << " J  steps " << w.stats().steps
                 << "  maxOverlap " << w.stats().maxOverlap << " m"
                 << "  lcpFailures " << w.stats().lcpFailures
-                << "  ExecutionTime = " << timer.elapsedTime() << " s"
+                << "  ExecutionTime = "
+                << st.wallTime + timer.elapsedTime() << " s"
                 << endl;
-            nextLog += ctrl.logInterval;
+            st.nextLog += ctrl.logInterval;
         }
 
         if (settled_)
         {
             break;
         }
+
+        if
+        (
+            checkpointInterval > 0
+         && timer.elapsedTime() >= nextCheckpoint
+         && w.time() < ctrl.endTime - 1e-12
+        )
+        {
+            writeCheckpoint(timer.elapsedTime());
+            nextCheckpoint = timer.elapsedTime() + checkpointInterval;
+        }
     }
 
-    wallTime_ = timer.elapsedTime();
+    // Stopped by endTime: the run can go on from here with a larger one
+    if (!settled_ && checkpointInterval > 0)
+    {
+        writeCheckpoint(timer.elapsedTime());
+    }
+
+    wallTime_ = st.wallTime + timer.elapsedTime();
 
     // Also leaves the final contact list, sleeping pellets included, in
     // w.contacts() for the contact treatments of the CFD case
@@ -804,9 +909,10 @@ void Foam::rbd::packedBed::run()
     {
         Info<< "Settled: kinetic energy below " << ctrl.settleEnergy
             << " n m g dp for " << ctrl.settleTime << " s";
-        if (released < number_)
+        if (st.released < number_)
         {
-            Info<< ", with " << released << " of " << number_ << " pellets "
+            Info<< ", with " << st.released << " of " << number_
+                << " pellets "
                 << "(the bed reached the release height)";
         }
         Info<< nl;
@@ -978,6 +1084,15 @@ void Foam::rbd::packedBed::write() const
             << " (rbdPackBed -overwrite to replace them)";
     }
     Info<< nl << endl;
+
+    // A settled packing is done: nothing to resume
+    const fileName checkpointFile(checkpoint::path(runTime_.path()));
+    if (settled_ && isFile(checkpointFile))
+    {
+        Foam::rm(checkpointFile);
+        Info<< "Removed " << checkpointFile.relative(runTime_.path()).c_str()
+            << " (the packing has settled)" << nl << endl;
+    }
 }
 
 

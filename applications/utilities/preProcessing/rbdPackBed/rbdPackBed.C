@@ -36,6 +36,11 @@ Usage
       - \par -overwrite
         Replace the CFD case files the case already has
 
+      - \par -resume
+        Continue the packing from postProcessing/rbdPackBed/checkpoint,
+        which a run writes every simulation/checkpointInterval seconds of
+        wall time and when it stops at endTime unsettled
+
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
@@ -81,6 +86,16 @@ int main(int argc, char *argv[])
         "overwrite",
         "Replace the CFD case files (system/, constant/, 0/) the case"
         " already has"
+    );
+
+    argList::addBoolOption
+    (
+        "resume",
+        "Continue the packing from postProcessing/rbdPackBed/checkpoint"
+        " (written every simulation/checkpointInterval s of wall time and"
+        " when a run stops at endTime unsettled); the dictionary may change"
+        " only simulation/{endTime,checkpointInterval,logInterval} and"
+        " cfdCase"
     );
 
     #include "setRootCase.H"
@@ -140,6 +155,10 @@ int main(int argc, char *argv[])
         bed.setOverwrite(true);
     }
     bed.writeSettings(Info);
+    if (args.found("resume"))
+    {
+        bed.resume();
+    }
     bed.run();
     bed.write();
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBody.H"
+#include "stateIO.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -98,6 +99,20 @@ void Foam::rbd::rigidBody::setState
         invInertia_ = invInertiaBody_.x()*tensor::I;
     }
     omega_ = applyInvInertia(L_);
+}
+
+
+void Foam::rbd::rigidBody::writeState(stateWriter& out) const
+{
+    out.put(x_).put(q_).put(P_).put(L_)
+       .put(v_).put(omega_).put(R_).put(invInertia_);
+}
+
+
+void Foam::rbd::rigidBody::readState(stateReader& in)
+{
+    in.get(x_).get(q_).get(P_).get(L_)
+      .get(v_).get(omega_).get(R_).get(invInertia_);
 }
 
 

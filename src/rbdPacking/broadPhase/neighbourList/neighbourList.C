@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "neighbourList.H"
+#include "stateIO.H"
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -185,6 +186,24 @@ void Foam::rbd::neighbourList::bruteForce
             }
         }
     }
+}
+
+
+void Foam::rbd::neighbourList::writeState(stateWriter& out) const
+{
+    out.putList(pairs_).putList(x0_);
+    out.put(cutoff0_).put(maxMoved_).put(nBuilds_);
+}
+
+
+void Foam::rbd::neighbourList::readState(stateReader& in)
+{
+    in.getList(pairs_);
+    List<point> x0;
+    in.getList(x0);
+    x0_ = x0;
+    in.get(cutoff0_).get(maxMoved_).get(nBuilds_);
+    adjacencyBuild_ = -1;
 }
 
 

@@ -4,6 +4,8 @@
 
 #include "restingContactSolver.H"
 #include "collisionResolver.H"
+#include "stateIO.H"
+#include <algorithm>
 #include <limits>
 #include <Eigen/Dense>
 #include <numeric>
@@ -825,6 +827,38 @@ Foam::rbd::restingContactSolver::solve
     normalForces_ = phiAll;
 
     return res;
+}
+
+
+void Foam::rbd::restingContactSolver::writeState(stateWriter& out) const
+{
+    // In key order: the same state gives the same file
+    std::vector<std::pair<std::uint64_t, bool>> pairs
+    (
+        active_.begin(), active_.end()
+    );
+    std::sort(pairs.begin(), pairs.end());
+    out.put(label(pairs.size()));
+    for (const auto& p : pairs)
+    {
+        out.put(p.first).put(p.second);
+    }
+}
+
+
+void Foam::rbd::restingContactSolver::readState(stateReader& in)
+{
+    label n = 0;
+    in.get(n);
+    in.checkSize(n);
+    active_.clear();
+    for (label a = 0; a < n; ++a)
+    {
+        std::uint64_t key = 0;
+        bool on = false;
+        in.get(key).get(on);
+        active_[key] = on;
+    }
 }
 
 

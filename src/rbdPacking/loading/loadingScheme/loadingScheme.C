@@ -6,6 +6,8 @@
 #include "dictionaryChecks.H"
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
+#include "stateIO.H"
+#include <sstream>
 
 using Foam::constant::mathematical::pi;
 
@@ -176,6 +178,31 @@ void Foam::rbd::loadingScheme::write(Ostream& os) const
     os.writeEntry("seed", seed_);
     os.writeEntry("releaseHeight", releaseHeight_);
     os.writeEntry("columnOffset", columnOffset_);
+}
+
+
+void Foam::rbd::loadingScheme::writeState(stateWriter& out) const
+{
+    // The standard's text form of the engine: exact and portable
+    std::ostringstream os;
+    os << rng_;
+    out.put(os.str());
+}
+
+
+void Foam::rbd::loadingScheme::readState(stateReader& in)
+{
+    std::string text;
+    in.get(text);
+    std::istringstream is(text);
+    is >> rng_;
+    if (!is)
+    {
+        FatalErrorInFunction
+            << "The checkpoint " << in.name().c_str() << " holds no state of the "
+            << "loading's random generator: it is damaged." << nl
+            << "    Delete it and run without -resume." << exit(FatalError);
+    }
 }
 
 

@@ -128,6 +128,10 @@ Foam::rbd::simulationControls::simulationControls
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
     settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-")),
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
+    checkpointInterval
+    (
+        getNonNegativeOrDefault(d, "checkpointInterval", 3600, "s")
+    ),
     restingCompliance(getInRangeOrDefault(d, "restingCompliance", 1e-5, 0,
         0.01, "-")),
     contactModel
@@ -147,7 +151,8 @@ Foam::rbd::simulationControls::simulationControls
         "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
         "restitutionSweeps", "maxSweeps", "collisionTolerance",
         "sleepVelocity", "sleepTime", "wakeVelocity",
-        "settleTime", "settleEnergy", "logInterval", "lcpSolver",
+        "settleTime", "settleEnergy", "logInterval", "checkpointInterval",
+        "lcpSolver",
         "restingCompliance",
         "contactModel", "restingFriction", "preset"
     };
@@ -216,6 +221,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("settleTime", settleTime);
     os.writeEntry("settleEnergy", settleEnergy);
     os.writeEntry("logInterval", logInterval);
+    os.writeEntry("checkpointInterval", checkpointInterval);
     os.writeEntry("restingCompliance", restingCompliance);
     os.writeEntry("contactModel", contactModel);
     os.writeEntry("restingFriction", restingFriction);

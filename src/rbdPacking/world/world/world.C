@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "world.H"
+#include "stateIO.H"
 #include "sphereContacts.H"
 #include "cylinderContacts.H"
 #include "cylinder.H"
@@ -887,6 +888,71 @@ const Foam::UList<Foam::rbd::contact>& Foam::rbd::world::allContacts()
     findContacts(true);
     stats_ = saved;
     return contacts_;
+}
+
+
+void Foam::rbd::world::writeState(stateWriter& out) const
+{
+    out.put(bodies_.size());
+    forAll(bodies_, i)
+    {
+        bodies_[i].writeState(out);
+    }
+    out.putList(fixed_).putList(slowTime_).putList(anchorX_)
+       .putList(anchorQ_);
+    neighbours_.writeState(out);
+    resting_.writeState(out);
+
+    out.put(time_).put(tinySteps_);
+    const statistics& s = stats_;
+    out.put(s.steps).put(s.collisions).put(s.impulses)
+       .put(s.collisionSweeps).put(s.restingSolves).put(s.lcpIterations)
+       .put(s.largestIsland).put(s.lcpFailures).put(s.projections)
+       .put(s.maxOverlap).put(s.minStep).put(s.maxCollisionEnergyGain);
+}
+
+
+void Foam::rbd::world::readState(stateReader& in)
+{
+    if (bodies_.size())
+    {
+        FatalErrorInFunction
+            << "A checkpoint is read into a world with no pellets"
+            << abort(FatalError);
+    }
+
+    label n = 0;
+    in.get(n);
+    in.checkSize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        // The shape's constants, then the state as it was
+        addBody(Zero, quaternion(1));
+        bodies_[i].readState(in);
+    }
+    in.getList(fixed_).getList(slowTime_).getList(anchorX_)
+      .getList(anchorQ_);
+    if
+    (
+        fixed_.size() != n || slowTime_.size() != n || anchorX_.size() != n
+     || anchorQ_.size() != n
+    )
+    {
+        FatalErrorInFunction
+            << "The checkpoint " << in.name().c_str() << " holds " << n
+            << " pellets but sleep states of " << fixed_.size()
+            << ": it is damaged." << nl
+            << "    Delete it and run without -resume." << exit(FatalError);
+    }
+    neighbours_.readState(in);
+    resting_.readState(in);
+
+    in.get(time_).get(tinySteps_);
+    statistics& s = stats_;
+    in.get(s.steps).get(s.collisions).get(s.impulses)
+      .get(s.collisionSweeps).get(s.restingSolves).get(s.lcpIterations)
+      .get(s.largestIsland).get(s.lcpFailures).get(s.projections)
+      .get(s.maxOverlap).get(s.minStep).get(s.maxCollisionEnergyGain);
 }
 
 

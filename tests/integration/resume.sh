@@ -1,0 +1,132 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# rbdPackBed -resume: a run stopped at endTime leaves a checkpoint, and the
+# run resumed from it with a larger endTime gives the packing of the run
+# that never stopped, bit for bit (spheres, and cylinders on meshes with
+# the coupled friction solve); a settled run removes its checkpoint; the
+# wall-clock interval writes checkpoints while running. Refused: -resume
+# without a checkpoint, with a dictionary that packs differently, with a
+# file that is not a checkpoint or is truncated; none of them writes any
+# output.
+#------------------------------------------------------------------------------
+set -u
+here="$(cd "$(dirname "$0")" && pwd)"
+. "$here/lib/checks.sh"
+
+out=postProcessing/rbdPackBed
+
+# resumeCase NAME STOP: the case $tmp/NAME-full packed in one run and
+# $tmp/NAME-split stopped at endTime STOP and resumed
+resumeCase()
+{
+    local name="$1" stop="$2"
+    local full="$tmp/$name-full" split="$tmp/$name-split"
+    local end
+    end="$(foamDictionary -entry simulation/endTime -value "$full/system/packingDict" 2>/dev/null)"
+
+    rbdPackBed -case "$full" > "$full.log" 2>&1
+    check "$name: the full run settles" \
+        "[ \"\$(foamDictionary -entry settled -value $full/$out/summary 2>/dev/null)\" = true ]"
+    check "$name: a settled run leaves no checkpoint" "[ ! -e $full/$out/checkpoint ]"
+
+    foamDictionary "$split/system/packingDict" -entry simulation/endTime -set "$stop" >/dev/null
+    rbdPackBed -case "$split" > "$split.1.log" 2>&1
+    check "$name: stopped at endTime $stop: exit 0, not settled" \
+        "[ \$? -eq 0 ] && grep -q 'Not settled by endTime' $split.1.log"
+    check "$name: ... and a checkpoint written" \
+        "[ -s $split/$out/checkpoint ] && grep -q 'Checkpoint at t = $stop s' $split.1.log"
+
+    foamDictionary "$split/system/packingDict" -entry simulation/endTime -set "$end" >/dev/null
+    rbdPackBed -case "$split" -resume > "$split.2.log" 2>&1
+    check "$name: -resume runs and says from where" \
+        "[ \$? -eq 0 ] && grep -q 'Resuming from $out/checkpoint at t = $stop s' $split.2.log"
+    check "$name: resumed packing = uninterrupted packing, bit for bit" \
+        "cmp -s $full/$out/pellets.csv $split/$out/pellets.csv"
+    for key in steps simulatedTime collisions maxOverlap bulkPorosity
+    do
+        check "$name: same $key" \
+            "[ \"\$(foamDictionary -entry $key -value $full/$out/summary 2>/dev/null)\" = \"\$(foamDictionary -entry $key -value $split/$out/summary 2>/dev/null)\" ]"
+    done
+    check "$name: the settled resumed run removed its checkpoint" \
+        "[ ! -e $split/$out/checkpoint ] && grep -q 'Removed $out/checkpoint' $split.2.log"
+}
+
+# Spheres (exact contacts)
+cp -r "$here/cases/smallSpheres" "$tmp/spheres-full"
+cp -r "$here/cases/smallSpheres" "$tmp/spheres-split"
+resumeCase spheres 1.5
+
+# Cylinders on 80-face meshes, coupled resting friction
+for c in cylinders-full cylinders-split
+do
+    cp -r "$here/cases/smallSpheres" "$tmp/$c"
+    d="$tmp/$c/system/packingDict"
+    foamDictionary "$d" -entry pellets/shape -set cylinder >/dev/null
+    foamDictionary "$d" -entry pellets/height -set 0.01 >/dev/null
+    foamDictionary "$d" -entry pellets/number -set 8 >/dev/null
+    foamDictionary "$d" -entry simulation/endTime -set 8 >/dev/null
+done
+resumeCase cylinders 1.2
+
+# Checkpoints by the wall clock while the run goes on
+cp -r "$here/cases/smallSpheres" "$tmp/often"
+foamDictionary "$tmp/often/system/packingDict" -entry simulation/checkpointInterval -set 1e-6 >/dev/null
+foamDictionary "$tmp/often/system/packingDict" -entry simulation/endTime -set 0.5 >/dev/null
+rbdPackBed -case "$tmp/often" > "$tmp/often.log" 2>&1
+check "checkpointInterval 1e-6: a checkpoint at every outer interval" \
+    "[ \$(grep -c 'Checkpoint at t = ' $tmp/often.log) -ge 15 ] && [ -s $tmp/often/$out/checkpoint ] && [ ! -e $tmp/often/$out/checkpoint.tmp ]"
+check "checkpointInterval is echoed" "grep -q 'checkpointInterval *1e-06' $tmp/often.log"
+
+# checkpointInterval 0: none, not even at endTime
+cp -r "$here/cases/smallSpheres" "$tmp/never"
+foamDictionary "$tmp/never/system/packingDict" -entry simulation/checkpointInterval -set 0 >/dev/null
+foamDictionary "$tmp/never/system/packingDict" -entry simulation/endTime -set 0.5 >/dev/null
+rbdPackBed -case "$tmp/never" > "$tmp/never.log" 2>&1
+check "checkpointInterval 0: no checkpoint" "[ ! -e $tmp/never/$out/checkpoint ]"
+
+# Refusals: nonzero exit, the reason, no output
+refused()
+{
+    local name="$1" case="$2" regex="$3"
+    rm -rf "$case/$out/pellets.csv" "$case/$out/summary" "$case/constant/triSurface"
+    rbdPackBed -case "$case" -resume > "$case.refused.log" 2>&1
+    local rc=$?
+    check "$name: nonzero exit" "[ $rc -ne 0 ]"
+    check "$name: says why" "grep -Eq \"$regex\" $case.refused.log"
+    check "$name: no stack trace" "! grep -q 'printStack\|#1  ' $case.refused.log"
+    check "$name: nothing written" \
+        "[ ! -e $case/$out/pellets.csv ] && [ ! -e $case/$out/summary ] && [ ! -e $case/constant/triSurface/pellets.stl ]"
+}
+
+cp -r "$here/cases/smallSpheres" "$tmp/none"
+refused "no checkpoint" "$tmp/none" "No checkpoint .*checkpoint to resume from"
+
+cp -r "$tmp/often" "$tmp/changed"
+foamDictionary "$tmp/changed/system/packingDict" -entry pellets/friction -set 0.2 >/dev/null
+refused "pellets changed" "$tmp/changed" "Entry 'pellets' of .*packingDict differs from its value in the dictionary the checkpoint"
+
+cp -r "$tmp/often" "$tmp/changedSim"
+foamDictionary "$tmp/changedSim/system/packingDict" -entry simulation/restingVelocity -set 0.02 >/dev/null
+refused "simulation/restingVelocity changed" "$tmp/changedSim" "Entry 'simulation' of .*differs"
+
+cp -r "$tmp/often" "$tmp/endTimeChanged"
+foamDictionary "$tmp/endTimeChanged/system/packingDict" -entry simulation/endTime -set 0.7 >/dev/null
+foamDictionary "$tmp/endTimeChanged/system/packingDict" -entry cfdCase/cellsPerDiameter -set 10 >/dev/null
+rbdPackBed -case "$tmp/endTimeChanged" -resume > "$tmp/endTimeChanged.log" 2>&1
+check "endTime and cfdCase may change: resumed to the new endTime" \
+    "[ \$? -eq 0 ] && grep -q 'Simulated 0.7 s' $tmp/endTimeChanged.log"
+
+cp -r "$tmp/often" "$tmp/garbage"
+echo "not a checkpoint" > "$tmp/garbage/$out/checkpoint"
+refused "not a checkpoint" "$tmp/garbage" "is not an rbdPacking checkpoint"
+
+cp -r "$tmp/often" "$tmp/truncated"
+size=$(stat -c %s "$tmp/truncated/$out/checkpoint")
+truncate -s $((size / 2)) "$tmp/truncated/$out/checkpoint"
+refused "truncated checkpoint" "$tmp/truncated" "ends before its state does"
+
+cp -r "$tmp/often" "$tmp/longer"
+echo "x" >> "$tmp/longer/$out/checkpoint"
+refused "checkpoint with trailing bytes" "$tmp/longer" "holds more than the state"
+
+exit $fail
