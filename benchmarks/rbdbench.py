@@ -33,6 +33,16 @@ Cache
     constant/triSurface/pellets.stl; the other STL and the CFD case files
     are deleted after the run (--keep-files keeps them).
 
+Resume
+    A case without a row whose run directory holds an rbdPackBed checkpoint
+    (postProcessing/rbdPackBed/checkpoint: the run was stopped, by a
+    timeout or a killed session) is continued with rbdPackBed -resume, not
+    started again; its earlier logs are kept as log.1, log.2, ... The
+    summary's wallTime then is the packing time of all the runs together
+    (up to the checkpoint each resumed from); the process wall time, CPU
+    time and memory columns are those of the last run only, and the
+    'resumes' column says how many runs came before it.
+
 Environment
     rbdPackBed is taken from this repository's etc/bashrc (sourced once),
     unless the environment already has RBD_PACKING_DIR pointing here.
@@ -743,17 +753,37 @@ class Benchmark:
             return True
         return False
 
+    def _resumable(self, case):
+        """The earlier logs of the case's stopped rbdPackBed run that left
+        a checkpoint to resume from, or None."""
+        d = self.caseDir(case)
+        checkpoint = d / 'postProcessing' / 'rbdPackBed' / 'checkpoint'
+        if (case.copyDir is not None or case.command[:1] != ['rbdPackBed']
+                or not checkpoint.exists() or self.args.force):
+            return None
+        return sorted(d.glob('log.[0-9]*'),
+                      key=lambda f: int(f.suffix[1:]))
+
     def _runOne(self, case, index, total):
-        d = self.writeCase(case)
         h = case.hash(self.overrides)
+        earlier = self._resumable(case)
+        command = list(case.command)
+        if earlier is None:
+            d = self.writeCase(case)
+            resumes = 0
+        else:
+            d = self.caseDir(case)
+            resumes = len(earlier) + 1
+            (d / 'log').rename(d / ('log.%d' % resumes))
+            command.append('-resume')
         print('[%d/%d] %s: %s (in %s)' % (index, total, case.name,
-                                          ' '.join(case.command),
+                                          ' '.join(command),
                                           repoPath(d)),
               flush=True)
         watch = d if case.copyDir is not None else None
-        res = runProcess(case.command, d, environment(), d / 'log',
+        res = runProcess(command, d, environment(), d / 'log',
                          timeout=self.args.timeout, watch=watch)
-        row = {'case': case.name, 'hash': h}
+        row = {'case': case.name, 'hash': h, 'resumes': resumes}
         row.update(case.params)
         row.update(res)
         row.pop('logStart', None)
@@ -947,8 +977,13 @@ class Report:
             stopped = True
             return fmt(r.get(logKey), spec) + ' *'
 
+        resumed = False
         for r in rows:
-            body.append([r['case'], r.get('status'),
+            runs = int(r.get('resumes') or 0)
+            resumed = resumed or runs > 0
+            body.append([r['case'] + (' (%d runs) \u2020' % (runs + 1)
+                                      if runs else ''),
+                         r.get('status'),
                          fmt(r.get('pellets')),
                          sumOrLog(r, 'steps', 'log/steps', '%.4g'),
                          sumOrLog(r, 'simulatedTime', 'log/time', '%.3g'),
@@ -965,6 +1000,14 @@ class Report:
                   'whole process (reading, packing, analysis, writing); '
                   'CPU is user + system time of the process.')
         self.parts.append(mdTable(headers, body))
+        if resumed:
+            self.text('\u2020 packed in several runs, each resumed from '
+                      'the checkpoint of the one before (rbdPackBed '
+                      '-resume, bit for bit the run that never stopped): '
+                      '`packing` is the time of all of them up to the '
+                      'last checkpoint (their CPU time: the summary\'s '
+                      '`cpuTime`); `process`, CPU and memory are those '
+                      'of the last run.')
         if stopped:
             self.text('\\* a run that did not finish: simulated time, '
                       'steps and packing time of its last progress line '

@@ -23,7 +23,7 @@ check "log ends with End" "tail -3 $tmp/a.log | grep -q '^End'"
 
 n="$(foamDictionary -entry pellets -value "$out/summary" 2>/dev/null)"
 check "summary: 20 pellets (foamDictionary reads it)" "[ \"$n\" = 20 ]"
-for key in shape tubeDiameter pelletDiameter bulkPorosity porosityHeight bedHeight maxOverlap simulatedTime wallTime steps settled
+for key in shape tubeDiameter pelletDiameter bulkPorosity porosityHeight bedHeight maxOverlap simulatedTime wallTime cpuTime steps settled
 do
     check "summary has $key" "foamDictionary -entry $key -value $out/summary >/dev/null 2>&1"
 done

@@ -19,7 +19,7 @@ out=postProcessing/rbdPackBed
 # $tmp/NAME-split stopped at endTime STOP and resumed
 resumeCase()
 {
-    local name="$1" stop="$2"
+    local name="$1" stop="$2" stoppedAt="${3:-$2}"
     local full="$tmp/$name-full" split="$tmp/$name-split"
     local end
     end="$(foamDictionary -entry simulation/endTime -value "$full/system/packingDict" 2>/dev/null)"
@@ -34,12 +34,12 @@ resumeCase()
     check "$name: stopped at endTime $stop: exit 0, not settled" \
         "[ \$? -eq 0 ] && grep -q 'Not settled by endTime' $split.1.log"
     check "$name: ... and a checkpoint written" \
-        "[ -s $split/$out/checkpoint ] && grep -q 'Checkpoint at t = $stop s' $split.1.log"
+        "[ -s $split/$out/checkpoint ] && grep -q 'Checkpoint at t = $stoppedAt s' $split.1.log"
 
     foamDictionary "$split/system/packingDict" -entry simulation/endTime -set "$end" >/dev/null
     rbdPackBed -case "$split" -resume > "$split.2.log" 2>&1
     check "$name: -resume runs and says from where" \
-        "[ \$? -eq 0 ] && grep -q 'Resuming from $out/checkpoint at t = $stop s' $split.2.log"
+        "[ \$? -eq 0 ] && grep -q 'Resuming from $out/checkpoint at t = $stoppedAt s' $split.2.log"
     check "$name: resumed packing = uninterrupted packing, bit for bit" \
         "cmp -s $full/$out/pellets.csv $split/$out/pellets.csv"
     for key in steps simulatedTime collisions maxOverlap bulkPorosity
@@ -47,6 +47,13 @@ resumeCase()
         check "$name: same $key" \
             "[ \"\$(foamDictionary -entry $key -value $full/$out/summary 2>/dev/null)\" = \"\$(foamDictionary -entry $key -value $split/$out/summary 2>/dev/null)\" ]"
     done
+    # The packing time counts the first run's up to its checkpoint
+    local w1 w2 c2
+    w1="$(sed -n 's/^Resuming from .* pellets released, [0-9]* steps, \([0-9.e+-]*\) s of wall time so far$/\1/p' "$split.2.log")"
+    w2="$(foamDictionary -entry wallTime -value "$split/$out/summary" 2>/dev/null)"
+    c2="$(foamDictionary -entry cpuTime -value "$split/$out/summary" 2>/dev/null)"
+    check "$name: wall time of both runs adds up (${w1:-?} s before the resume, $w2 s in all; CPU $c2 s)" \
+        "awk -v a=${w1:-0} -v b=$w2 -v c=$c2 'BEGIN {exit !(a > 0 && b > a && c > 0)}'"
     check "$name: the settled resumed run removed its checkpoint" \
         "[ ! -e $split/$out/checkpoint ] && grep -q 'Removed $out/checkpoint' $split.2.log"
 }
@@ -54,7 +61,13 @@ resumeCase()
 # Spheres (exact contacts)
 cp -r "$here/cases/smallSpheres" "$tmp/spheres-full"
 cp -r "$here/cases/smallSpheres" "$tmp/spheres-split"
-resumeCase spheres 1.5
+resumeCase spheres 0.7
+
+# Stopped mid-fill at a time off the grid of outer intervals (deltaT
+# 0.025 s): the run stops at the end of the interval, 0.725 s
+cp -r "$here/cases/smallSpheres" "$tmp/offGrid-full"
+cp -r "$here/cases/smallSpheres" "$tmp/offGrid-split"
+resumeCase offGrid 0.71 0.725
 
 # Cylinders on 80-face meshes, coupled resting friction
 for c in cylinders-full cylinders-split

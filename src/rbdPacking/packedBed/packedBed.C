@@ -63,6 +63,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     resumed_(false),
     settled_(false),
     wallTime_(0),
+    cpuTime_(0),
     finalOverlap_(0)
 {
     const dictionary& containerDict = dict.subDict("container");
@@ -283,7 +284,11 @@ void Foam::rbd::packedBed::releasePellets()
 }
 
 
-void Foam::rbd::packedBed::writeCheckpoint(const scalar wallTime) const
+void Foam::rbd::packedBed::writeCheckpoint
+(
+    const scalar wallTime,
+    const scalar cpuTime
+) const
 {
     const fileName file(checkpoint::path(runTime_.path()));
     checkpoint::write
@@ -297,7 +302,8 @@ void Foam::rbd::packedBed::writeCheckpoint(const scalar wallTime) const
             out.putList(state_.lastOfColumn);
             out.put(state_.released).put(state_.quietTime)
                .put(state_.nextLog).put(state_.lastRelease)
-               .put(state_.warnedStall).put(state_.wallTime + wallTime);
+               .put(state_.warnedStall).put(state_.wallTime + wallTime)
+               .put(state_.cpuTime + cpuTime);
         }
     );
     Info<< "Checkpoint at t = " << world_->time() << " s ("
@@ -321,7 +327,8 @@ void Foam::rbd::packedBed::resume()
             in.getList(state_.lastOfColumn);
             in.get(state_.released).get(state_.quietTime)
               .get(state_.nextLog).get(state_.lastRelease)
-              .get(state_.warnedStall).get(state_.wallTime);
+              .get(state_.warnedStall).get(state_.wallTime)
+              .get(state_.cpuTime);
         }
     );
 
@@ -783,6 +790,7 @@ void Foam::rbd::packedBed::writeSettings(Ostream& os) const
 void Foam::rbd::packedBed::run()
 {
     clockTime timer;
+    cpuTime cpuTimer;
     world& w = world_();
     const simulationControls& ctrl = controls_;
     const pelletShape& shape = shape_();
@@ -816,7 +824,9 @@ void Foam::rbd::packedBed::run()
     Info<< "Packing " << number_ << ' ' << shape.type() << " pellets" << nl
         << endl;
 
-    while (w.time() < ctrl.endTime - 1e-12)
+    // Tested at the ends of outer intervals only (below)
+    bool goOn = w.time() < ctrl.endTime - 1e-12;
+    while (goOn)
     {
         const label before = st.released;
         releasePellets();
@@ -825,9 +835,15 @@ void Foam::rbd::packedBed::run()
             st.lastRelease = w.time();
         }
 
+        // The run stops at the end of the outer interval that reaches
+        // endTime, never within one: a stop (and a checkpoint) is then a
+        // state the run that goes on passes through too (a step cut at
+        // an endTime of 0.7 s, which is 0.7000000000000001 s on the grid
+        // of 0.025 s, or a stop within the interval at 0.71 s, made the
+        // resumed run another one)
         const scalar tOuter =
             ctrl.deltaT*(std::floor(w.time()/ctrl.deltaT + 1e-9) + 1);
-        w.step(min(tOuter, ctrl.endTime) - w.time());
+        w.step(tOuter - w.time());
 
         if (w.time() < tOuter - 1e-12)
         {
@@ -875,19 +891,15 @@ void Foam::rbd::packedBed::run()
             st.nextLog += ctrl.logInterval;
         }
 
-        if (settled_)
-        {
-            break;
-        }
+        goOn = !settled_ && w.time() < ctrl.endTime - 1e-12;
 
         if
         (
-            checkpointInterval > 0
+            goOn && checkpointInterval > 0
          && timer.elapsedTime() >= nextCheckpoint
-         && w.time() < ctrl.endTime - 1e-12
         )
         {
-            writeCheckpoint(timer.elapsedTime());
+            writeCheckpoint(timer.elapsedTime(), cpuTimer.elapsedCpuTime());
             nextCheckpoint = timer.elapsedTime() + checkpointInterval;
         }
     }
@@ -895,10 +907,11 @@ void Foam::rbd::packedBed::run()
     // Stopped by endTime: the run can go on from here with a larger one
     if (!settled_ && checkpointInterval > 0)
     {
-        writeCheckpoint(timer.elapsedTime());
+        writeCheckpoint(timer.elapsedTime(), cpuTimer.elapsedCpuTime());
     }
 
     wallTime_ = st.wallTime + timer.elapsedTime();
+    cpuTime_ = st.cpuTime + cpuTimer.elapsedCpuTime();
 
     // Also leaves the final contact list, sleeping pellets included, in
     // w.contacts() for the contact treatments of the CFD case
@@ -933,7 +946,8 @@ void Foam::rbd::packedBed::run()
         << s.largestIsland << " contacts, "
         << s.lcpFailures << " not converged), " << s.projections
         << " overlap corrections" << nl
-        << "Wall time " << wallTime_ << " s" << nl << endl;
+        << "Wall time " << wallTime_ << " s (CPU " << cpuTime_ << " s)"
+        << nl << endl;
 }
 
 
@@ -1037,6 +1051,7 @@ void Foam::rbd::packedBed::write() const
     summary.add("finalMaxOverlap", finalOverlap_);
     summary.add("simulatedTime", w.time());
     summary.add("wallTime", wallTime_);
+    summary.add("cpuTime", cpuTime_);
     summary.add("steps", w.stats().steps);
     summary.add("collisions", w.stats().collisions);
     summary.add("lcpFailures", w.stats().lcpFailures);
