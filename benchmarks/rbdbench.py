@@ -34,10 +34,11 @@ Cache
     are deleted after the run (--keep-files keeps them).
 
 Resume
-    A case without a row whose run directory holds an rbdPackBed checkpoint
+    A case without a row, or whose row says timeout (with --retry), whose
+    run directory holds an rbdPackBed checkpoint
     (postProcessing/rbdPackBed/checkpoint: the run was stopped, by a
     timeout or a killed session) is continued with rbdPackBed -resume, not
-    started again; its earlier logs are kept as log.1, log.2, ... The
+    started again (--force, --rerun and --stale start anew); its earlier logs are kept as log.1, log.2, ... The
     summary's wallTime then is the packing time of all the runs together
     (up to the checkpoint each resumed from); the process wall time, CPU
     time and memory columns are those of the last run only, and the
@@ -758,8 +759,15 @@ class Benchmark:
         a checkpoint to resume from, or None."""
         d = self.caseDir(case)
         checkpoint = d / 'postProcessing' / 'rbdPackBed' / 'checkpoint'
+        a = self.args
+        row = self.rows.get((case.name, case.hash(self.overrides)))
+        # Only a run that was stopped (no row: its session ended; or a
+        # timeout) goes on; a finished one, even unsettled at endTime, and
+        # a rerun asked for (--force, --rerun, --stale) start anew
         if (case.copyDir is not None or case.command[:1] != ['rbdPackBed']
-                or not checkpoint.exists() or self.args.force):
+                or not checkpoint.exists() or not (d / 'log').exists()
+                or a.force or a.rerun or a.stale
+                or (row is not None and row.get('status') != 'timeout')):
             return None
         return sorted(d.glob('log.[0-9]*'),
                       key=lambda f: int(f.suffix[1:]))
@@ -789,7 +797,12 @@ class Benchmark:
         row.pop('logStart', None)
         summaryFile = d / 'postProcessing' / 'rbdPackBed' / 'summary'
         if summaryFile.exists():
-            row.update(flatten(readSummary(d)))
+            summary = flatten(readSummary(d))
+            # The packing's own CPU time (all runs of a resumed case) is
+            # not the process's (cpuTime above)
+            if 'cpuTime' in summary:
+                summary['packingCpuTime'] = summary.pop('cpuTime')
+            row.update(summary)
         row.update(readLogStatistics(d / 'log'))
         if watch is not None:
             row['logStart'] = json.dumps(res.get('logStart', {}))
@@ -1006,8 +1019,9 @@ class Report:
                       '-resume, bit for bit the run that never stopped): '
                       '`packing` is the time of all of them up to the '
                       'last checkpoint (their CPU time: the summary\'s '
-                      '`cpuTime`); `process`, CPU and memory are those '
-                      'of the last run.')
+                      '`cpuTime`, column packingCpuTime of results.csv); '
+                      '`process`, CPU and memory are those of the last '
+                      'run.')
         if stopped:
             self.text('\\* a run that did not finish: simulated time, '
                       'steps and packing time of its last progress line '

@@ -118,6 +118,11 @@ cp -r "$tmp/often" "$tmp/changed"
 foamDictionary "$tmp/changed/system/packingDict" -entry pellets/friction -set 0.2 >/dev/null
 refused "pellets changed" "$tmp/changed" "Entry 'pellets' of .*packingDict differs from its value in the dictionary the checkpoint"
 
+cp -r "$tmp/often" "$tmp/changedDigits"
+# (sed: foamDictionary -set writes 6 digits)
+sed -i 's/^\( *density *\)8030;/\18030.0004;/' "$tmp/changedDigits/system/packingDict"
+refused "a change in the 8th digit" "$tmp/changedDigits" "Entry 'pellets' of .*differs"
+
 cp -r "$tmp/often" "$tmp/changedSim"
 foamDictionary "$tmp/changedSim/system/packingDict" -entry simulation/restingVelocity -set 0.02 >/dev/null
 refused "simulation/restingVelocity changed" "$tmp/changedSim" "Entry 'simulation' of .*differs"
@@ -136,10 +141,23 @@ refused "not a checkpoint" "$tmp/garbage" "is not an rbdPacking checkpoint"
 cp -r "$tmp/often" "$tmp/truncated"
 size=$(stat -c %s "$tmp/truncated/$out/checkpoint")
 truncate -s $((size / 2)) "$tmp/truncated/$out/checkpoint"
-refused "truncated checkpoint" "$tmp/truncated" "ends before its state does"
+refused "truncated checkpoint" "$tmp/truncated" "ends before its state does|it is damaged"
 
 cp -r "$tmp/often" "$tmp/longer"
 echo "x" >> "$tmp/longer/$out/checkpoint"
 refused "checkpoint with trailing bytes" "$tmp/longer" "holds more than the state"
+
+# A damaged size field (the number of dictionary blocks, after the magic
+# and four labels): refused at once, no allocation of gigabytes
+cp -r "$tmp/often" "$tmp/hugeSize"
+printf '\xff\xff\xff\x7f' | dd of="$tmp/hugeSize/$out/checkpoint" bs=1 seek=41 conv=notrunc status=none
+refused "damaged size field" "$tmp/hugeSize" "holds a list of 2147483647 entries"
+
+# A fresh run (no -resume) removes the checkpoint an earlier run left
+cp -r "$tmp/often" "$tmp/stale"
+foamDictionary "$tmp/stale/system/packingDict" -entry simulation/checkpointInterval -set 0 >/dev/null
+rbdPackBed -case "$tmp/stale" > "$tmp/stale.log" 2>&1
+check "a fresh run removes an earlier run's checkpoint" \
+    "[ ! -e $tmp/stale/$out/checkpoint ] && grep -q 'of an earlier run' $tmp/stale.log"
 
 exit $fail

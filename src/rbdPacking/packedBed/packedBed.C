@@ -812,6 +812,16 @@ void Foam::rbd::packedBed::run()
     {
         state_ = runState();
         state_.lastOfColumn.setSize(loading_->nColumns(), -1);
+
+        // A checkpoint of an earlier packing of this case is not this
+        // run's: a later -resume must not continue it
+        const fileName old(checkpoint::path(runTime_.path()));
+        if (isFile(old))
+        {
+            Foam::rm(old);
+            Info<< "Removed " << old.relative(runTime_.path()).c_str()
+                << " of an earlier run (this one starts anew)" << nl << endl;
+        }
     }
     runState& st = state_;
     settled_ = false;

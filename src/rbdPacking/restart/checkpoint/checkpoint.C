@@ -7,6 +7,7 @@
 #include "OSspecific.H"
 
 #include <fstream>
+#include <limits>
 
 // * * * * * * * * * * * * * * * * Local Data  * * * * * * * * * * * * * * * //
 
@@ -14,7 +15,7 @@ namespace
 {
     //- The format's name and version
     const std::string magic("rbdPacking checkpoint");
-    const Foam::label version = 1;
+    const Foam::label version = 2;
 
     //- Written as a label: read back the same only with the same byte order
     const Foam::label byteOrderMark = 0x01020304;
@@ -56,7 +57,9 @@ Foam::List<Foam::Pair<std::string>> Foam::rbd::checkpoint::identity
             continue;
         }
 
+        // Every digit of every number: 8030.0004 is not 8030
         OStringStream os;
+        os.precision(std::numeric_limits<scalar>::max_digits10);
         if (name == "simulation" && e.isDict())
         {
             dictionary d(e.dict());

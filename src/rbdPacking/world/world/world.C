@@ -945,6 +945,17 @@ void Foam::rbd::world::readState(stateReader& in)
             << "    Delete it and run without -resume." << exit(FatalError);
     }
     neighbours_.readState(in);
+    for (const labelPair& pr : neighbours_.pairs())
+    {
+        if (pr.first() < 0 || pr.first() >= pr.second() || pr.second() >= n)
+        {
+            FatalErrorInFunction
+                << "The checkpoint " << in.name().c_str() << " lists the "
+                << "pair (" << pr.first() << ' ' << pr.second() << ") of "
+                << n << " pellets: it is damaged." << nl
+                << "    Delete it and run without -resume." << exit(FatalError);
+        }
+    }
     resting_.readState(in);
 
     in.get(time_).get(tinySteps_);
