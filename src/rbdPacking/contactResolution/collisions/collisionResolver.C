@@ -23,7 +23,8 @@ Foam::rbd::collisionResolver::collisionResolver
     approachTolerance_(approachTolerance),
     wakeVelocity_(wakeVelocity),
     restitutionSweeps_(restitutionSweeps),
-    maxSweeps_(maxSweeps)
+    maxSweeps_(maxSweeps),
+    version_()
 {}
 
 
@@ -115,7 +116,11 @@ Foam::rbd::collisionResolver::resolve
     // versions of a contact's bodies when it was last found satisfied. The
     // sweeps then cost what the impulses' spread costs, not the number of
     // touching contacts times the sweeps, with the same result.
-    labelList version(bodies.size(), 0);
+    if (version_.size() < bodies.size())
+    {
+        version_.setSize(bodies.size(), 0);
+    }
+    labelList& version = version_;
     List<labelPair> seen(touching.size(), labelPair(-1, -1));
 
     for (label sweep = 0; sweep < maxSweeps_; ++sweep)
@@ -201,6 +206,16 @@ Foam::rbd::collisionResolver::resolve
         {
             res.residual = 0;
             break;
+        }
+    }
+
+    // The counts as between resolves
+    for (const label ci : touching)
+    {
+        version[contacts[ci].i] = 0;
+        if (contacts[ci].k >= 0)
+        {
+            version[contacts[ci].k] = 0;
         }
     }
 

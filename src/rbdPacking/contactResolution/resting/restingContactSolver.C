@@ -123,6 +123,30 @@ Foam::rbd::restingContactSolver::restingContactSolver
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::rbd::restingContactSolver::bodyBuffers::resize(const label n)
+{
+    const label n0 = parent.size();
+    if (n <= n0)
+    {
+        return;
+    }
+    parent.resize(n);
+    std::iota(parent.begin() + n0, parent.end(), n0);
+    islandOf.resize(n);
+    bodyRows.resize(n);
+    bodyColumn.resize(n, -1);
+    listed.resize(n, false);
+    for (List<vector>* f : {&Ffric, &tauFric, &Ftot, &tauTot})
+    {
+        f->setSize(n);
+        for (label b = n0; b < n; ++b)
+        {
+            (*f)[b] = Zero;
+        }
+    }
+}
+
+
 Foam::rbd::restingContactSolver::result
 Foam::rbd::restingContactSolver::solve
 (
@@ -143,9 +167,28 @@ Foam::rbd::restingContactSolver::solve
         return res;
     }
 
+    // The bodies the contacts move, each once: the only entries of the
+    // per-body buffers this solve uses (and restores at its end)
+    buf_.resize(bodies.size());
+    std::vector<label> moved;
+    for (const contact& c : contacts)
+    {
+        for (const label b : {c.i, c.k})
+        {
+            if
+            (
+                (b == c.i || (b >= 0 && !fixed[b]))
+             && !buf_.listed[b]
+            )
+            {
+                buf_.listed[b] = true;
+                moved.push_back(b);
+            }
+        }
+    }
+
     // Islands: contacts connected through bodies that move
-    std::vector<label> parent(bodies.size());
-    std::iota(parent.begin(), parent.end(), 0);
+    std::vector<label>& parent = buf_.parent;
     for (const contact& c : contacts)
     {
         if (c.k >= 0 && !fixed[c.k])
@@ -154,7 +197,7 @@ Foam::rbd::restingContactSolver::solve
         }
     }
 
-    std::vector<std::vector<label>> islandOf(bodies.size());
+    std::vector<std::vector<label>>& islandOf = buf_.islandOf;
     std::vector<label> roots;
     forAll(contacts, ci)
     {
@@ -173,18 +216,19 @@ Foam::rbd::restingContactSolver::solve
         anyFriction = anyFriction || c.mu > 0;
     }
 
-    // External forces (gravity) kept apart from contact forces
-    const List<vector> Fext(F);
-    const List<vector> tauExt(tau);
-    List<vector> Ffric(F.size(), Zero);
-    List<vector> tauFric(F.size(), Zero);
+    // External forces (gravity): F and tau as given, unchanged until the
+    // totals at the end; contact forces kept apart
+    const UList<vector>& Fext = F;
+    const UList<vector>& tauExt = tau;
+    List<vector>& Ffric = buf_.Ffric;
+    List<vector>& tauFric = buf_.tauFric;
 
     // Friction of each contact [N]
     List<vector> friction(contacts.size(), Zero);
 
     std::vector<row> rowsI, rowsK;
-    std::vector<std::vector<std::pair<label, bool>>> bodyRows(bodies.size());
-    std::vector<label> bodyColumn(bodies.size(), -1);
+    std::vector<std::vector<std::pair<label, bool>>>& bodyRows = buf_.bodyRows;
+    std::vector<label>& bodyColumn = buf_.bodyColumn;
     std::vector<Eigen::Triplet<double>> gTriplets;
     lcpFactors factors;
     std::vector<Eigen::Triplet<double>> triplets;
@@ -466,9 +510,22 @@ Foam::rbd::restingContactSolver::solve
         // friction, t1 against its slip at the end of the step under the
         // frictionless forces of pass 1 (so that where the contact slides
         // the box of the two gives mu phi against the slip, as Coulomb's
-        // cone does)
-        List<vector> Ftot(Fext);
-        List<vector> tauTot(tauExt);
+        // cone does). Ftot: the external forces with them, on the
+        // island's bodies
+        List<vector>& Ftot = buf_.Ftot;
+        List<vector>& tauTot = buf_.tauTot;
+        for (const label ci : cs)
+        {
+            const contact& c = contacts[ci];
+            for (const label b : {c.i, c.k})
+            {
+                if (b == c.i || (b >= 0 && !fixed[b]))
+                {
+                    Ftot[b] = Fext[b];
+                    tauTot[b] = tauExt[b];
+                }
+            }
+        }
         for (const label ci : cs)
         {
             applyForce
@@ -732,8 +789,13 @@ Foam::rbd::restingContactSolver::solve
         {
             // Friction from the predicted slip at the end of the step, clamped
             // to mu phi (eq 9); two Gauss-Seidel sweeps for coupled contacts
-            List<vector> Ftot(Fext);
-            List<vector> tauTot(tauExt);
+            List<vector>& Ftot = buf_.Ftot;
+            List<vector>& tauTot = buf_.tauTot;
+            for (const label b : moved)
+            {
+                Ftot[b] = Fext[b];
+                tauTot[b] = tauExt[b];
+            }
             forAll(contacts, ci)
             {
                 if (staggered[ci])
@@ -789,12 +851,12 @@ Foam::rbd::restingContactSolver::solve
             }
 
             // Pass 2: normal forces with friction in B
-            List<vector> Fb(Fext);
-            List<vector> tb(tauExt);
-            forAll(Fb, b)
+            List<vector>& Fb = buf_.Ftot;
+            List<vector>& tb = buf_.tauTot;
+            for (const label b : moved)
             {
-                Fb[b] += Ffric[b];
-                tb[b] += tauFric[b];
+                Fb[b] = Fext[b] + Ffric[b];
+                tb[b] = tauExt[b] + tauFric[b];
             }
             for (const label r : staggeredRoots)
             {
@@ -811,8 +873,9 @@ Foam::rbd::restingContactSolver::solve
 
     recordActive();
 
-    // Total: external + friction + normal
-    forAll(F, b)
+    // Total: external + friction + normal (the friction is zero on a body
+    // no contact moves)
+    for (const label b : moved)
     {
         F[b] = Fext[b] + Ffric[b];
         tau[b] = tauExt[b] + tauFric[b];
@@ -825,6 +888,19 @@ Foam::rbd::restingContactSolver::solve
         );
     }
     normalForces_ = phiAll;
+
+    // The buffers as between solves
+    for (const label r : roots)
+    {
+        islandOf[r].clear();
+    }
+    for (const label b : moved)
+    {
+        parent[b] = b;
+        Ffric[b] = Zero;
+        tauFric[b] = Zero;
+        buf_.listed[b] = false;
+    }
 
     return res;
 }

@@ -84,6 +84,10 @@ Foam::rbd::world::world
     anchorX_(),
     anchorQ_(),
     neighbours_(controls.neighbourSkin*shape.boundingRadius()),
+    awake_(),
+    activePairs_(),
+    awakeValid_(false),
+    activePairsBuild_(-1),
     collisions_
     (
         controls.restingVelocity,
@@ -171,7 +175,46 @@ Foam::label Foam::rbd::world::addBody(const point& x, const quaternion& q)
     slowTime_.append(0);
     anchorX_.append(x);
     anchorQ_.append(q);
+    sleepSetChanged();
     return bodies_.size() - 1;
+}
+
+
+const Foam::UList<Foam::label>& Foam::rbd::world::awake() const
+{
+    if (!awakeValid_)
+    {
+        awake_.clear();
+        forAll(fixed_, i)
+        {
+            if (!fixed_[i])
+            {
+                awake_.append(i);
+            }
+        }
+        awakeValid_ = true;
+        activePairsBuild_ = -1;
+    }
+    return awake_;
+}
+
+
+const Foam::UList<Foam::labelPair>& Foam::rbd::world::activePairs() const
+{
+    awake();
+    if (activePairsBuild_ != neighbours_.nBuilds())
+    {
+        activePairs_.clear();
+        for (const labelPair& pr : neighbours_.pairs())
+        {
+            if (!fixed_[pr.first()] || !fixed_[pr.second()])
+            {
+                activePairs_.append(pr);
+            }
+        }
+        activePairsBuild_ = neighbours_.nBuilds();
+    }
+    return activePairs_;
 }
 
 
@@ -254,14 +297,14 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
     }
     neighbours_.update(x, 2*rb_ + band_);
 
-    for (const labelPair& pr : neighbours_.pairs())
+    for
+    (
+        const labelPair& pr
+      : withSleepers ? UList<labelPair>(neighbours_.pairs()) : activePairs()
+    )
     {
         label i = pr.first();
         label k = pr.second();
-        if (fixed_[i] && fixed_[k] && !withSleepers)
-        {
-            continue;
-        }
         if (fixed_[i] && !fixed_[k])
         {
             std::swap(i, k);
@@ -269,9 +312,16 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
         pelletPair(i, k);
     }
 
-    forAll(bodies_, i)
+    if (withSleepers)
     {
-        if (!fixed_[i] || withSleepers)
+        forAll(bodies_, i)
+        {
+            pelletContainer(i);
+        }
+    }
+    else
+    {
+        for (const label i : awake())
         {
             pelletContainer(i);
         }
@@ -362,7 +412,7 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
     //    unlisted clearance apart, i.e. their bounding spheres at least
     //    lambda + clearance: no body may cover half of that
     scalar sMax = 0;
-    forAll(bodies_, i)
+    for (const label i : awake())
     {
         sMax = max(sMax, surfaceSpeed(i));
     }
@@ -413,14 +463,10 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
 
     // 2. Listed pairs apart by more than the band: their bounding spheres
     //    may approach until touching
-    for (const labelPair& pr : neighbours_.pairs())
+    for (const labelPair& pr : activePairs())
     {
         const label i = pr.first();
         const label k = pr.second();
-        if (fixed_[i] && fixed_[k])
-        {
-            continue;
-        }
         const vector d(bodies_[i].x() - bodies_[k].x());
         const scalar dist = mag(d);
         const scalar gap = dist - 2*rb_;
@@ -445,12 +491,8 @@ Foam::scalar Foam::rbd::world::chooseStep(const scalar hMax) const
 
     // ... and the container, the same way
     const scalar R = tube_.radius();
-    forAll(bodies_, i)
+    for (const label i : awake())
     {
-        if (fixed_[i])
-        {
-            continue;
-        }
         const rigidBody& b = bodies_[i];
         const scalar spin = surfaceSpeed(i) - mag(b.v());
         const scalar zGap = b.x().z() - rb_;
@@ -557,12 +599,8 @@ void Foam::rbd::world::updateSleep(const scalar h)
     }
 
     const bool turns = rotates_ && !shape_.isSphere();
-    forAll(bodies_, i)
+    for (const label i : awake())
     {
-        if (fixed_[i])
-        {
-            continue;
-        }
         rigidBody& b = bodies_[i];
 
         scalar moved = mag(b.x() - anchorX_[i]);
@@ -595,9 +633,15 @@ void Foam::rbd::world::updateSleep(const scalar h)
     // removing the still pellets that rest on a pellet staying awake until
     // none is left
     boolList sleeps(bodies_.size(), false);
-    forAll(bodies_, i)
+    bool anyStill = false;
+    for (const label i : awake())
     {
-        sleeps[i] = !fixed_[i] && slowTime_[i] >= controls_.sleepTime;
+        sleeps[i] = slowTime_[i] >= controls_.sleepTime;
+        anyStill = anyStill || sleeps[i];
+    }
+    if (!anyStill)
+    {
+        return;
     }
     for (bool removed = true; removed; )
     {
@@ -611,14 +655,22 @@ void Foam::rbd::world::updateSleep(const scalar h)
             }
         }
     }
-    forAll(bodies_, i)
+    bool changed = false;
+    for (const label i : awake())
     {
         if (sleeps[i])
         {
             rigidBody& b = bodies_[i];
             fixed_[i] = true;
             b.setState(b.x(), b.q(), Zero, Zero);
+            F_[i] = Zero;
+            tau_[i] = Zero;
+            changed = true;
         }
+    }
+    if (changed)
+    {
+        sleepSetChanged();
     }
 }
 
@@ -644,7 +696,11 @@ bool Foam::rbd::world::wake(const label i)
             continue;
         }
         first = false;
-        woke = woke || fixed_[j];
+        if (fixed_[j])
+        {
+            woke = true;
+            sleepSetChanged();
+        }
         fixed_[j] = false;
         slowTime_[j] = 0;
         anchorX_[j] = bodies_[j].x();
@@ -769,11 +825,17 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     //    constraint of a separating or distant contact is inactive unless
     //    the forces of its neighbours would drive it into interpenetration
     //    within the step, which is exactly when it must act.
-    F_.setSize(bodies_.size());
-    tau_.setSize(bodies_.size());
-    forAll(bodies_, i)
+    //    A sleeper's entries are zero (set when it fell asleep)
+    if (F_.size() != bodies_.size())
     {
-        F_[i] = fixed_[i] ? Zero : vector(0, 0, -g*bodies_[i].mass());
+        F_.setSize(bodies_.size());
+        tau_.setSize(bodies_.size());
+        F_ = Zero;
+        tau_ = Zero;
+    }
+    for (const label i : awake())
+    {
+        F_[i] = vector(0, 0, -g*bodies_[i].mass());
         tau_[i] = Zero;
     }
 
@@ -793,12 +855,9 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     }
 
     // 7. Integration
-    forAll(bodies_, i)
+    for (const label i : awake())
     {
-        if (!fixed_[i])
-        {
-            midpointIntegrator::step(bodies_[i], F_[i], tau_[i], h);
-        }
+        midpointIntegrator::step(bodies_[i], F_[i], tau_[i], h);
     }
 
     updateSleep(h);
@@ -850,10 +909,11 @@ Foam::label Foam::rbd::world::nSleeping() const
 
 Foam::scalar Foam::rbd::world::kineticEnergy() const
 {
+    // Sleepers have none (their momenta are zero)
     scalar E = 0;
-    for (const rigidBody& b : bodies_)
+    for (const label i : awake())
     {
-        E += b.kineticEnergy();
+        E += bodies_[i].kineticEnergy();
     }
     return E;
 }
@@ -932,6 +992,7 @@ void Foam::rbd::world::readState(stateReader& in)
     }
     in.getList(fixed_).getList(slowTime_).getList(anchorX_)
       .getList(anchorQ_);
+    sleepSetChanged();
     if
     (
         fixed_.size() != n || slowTime_.size() != n || anchorX_.size() != n
