@@ -955,7 +955,8 @@ void Foam::rbd::packedBed::run()
         << "(" << s.lcpIterations << " LCP iterations, largest island "
         << s.largestIsland << " contacts, "
         << s.lcpFailures << " not converged), " << s.projections
-        << " overlap corrections" << nl
+        << " overlap corrections, " << w.broadPhaseBuilds()
+        << " neighbour-list builds" << nl
         << "Wall time " << wallTime_ << " s (CPU " << cpuTime_ << " s)"
         << nl << endl;
 }
