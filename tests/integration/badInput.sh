@@ -67,6 +67,8 @@ STL
             touch "$tmp/notADirectory"; caseArg="$tmp/notADirectory" ;;
     file)   # a regular file where an output directory goes
             mkdir -p "$(dirname "$tmp/case/$2")"; touch "$tmp/case/$2" ;;
+    dir)    # a directory where an output file goes
+            mkdir -p "$tmp/case/$2" ;;
     stlnan) # a binary STL tetrahedron with one NaN coordinate
             foamDictionary "$dict" -entry pellets/shape -set stl >/dev/null 2>&1
             foamDictionary "$dict" -entry pellets/diameter -remove >/dev/null 2>&1
@@ -102,6 +104,7 @@ then
     echo "FAIL: log does not match: $expect"; fail=1
 fi
 if [ "$1" != nocase ] && [ "$1" != nodict ] && [ "$1" != file ] \
+    && [ "$1" != dir ] \
     && ! grep -q "packingDict" "$tmp/log"
 then
     echo "FAIL: the error does not name packingDict"; fail=1

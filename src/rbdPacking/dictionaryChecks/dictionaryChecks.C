@@ -124,8 +124,12 @@ Foam::scalar Foam::rbd::getInRangeOrDefault
         badEntry
         (
             dict, key, value,
-            inUnit("a number in", unit)
-          + " [" + Foam::name(lo) + ", " + Foam::name(hi) + "]"
+            inUnit
+            (
+                "a number in [" + Foam::name(lo) + ", " + Foam::name(hi)
+              + "]",
+                unit
+            )
         );
     }
     return value;

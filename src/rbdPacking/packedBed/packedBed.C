@@ -35,7 +35,7 @@ const Foam::scalar Foam::rbd::packedBed::loosestPorosity = 0.95;
 Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
 :
     runTime_(runTime),
-    tube_(dict.subDict("container")),
+    tube_(checkBlocks(dict).subDict("container")),
     shape_(pelletShape::New(dict.subDict("pellets"))),
     material_
     {
@@ -69,8 +69,6 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     const dictionary& containerDict = dict.subDict("container");
     const dictionary& pelletsDict = dict.subDict("pellets");
     const pelletShape& shape = shape_();
-
-    checkBlocks(dict);
 
     // The tube must take a pellet in any orientation
     const scalar rb = shape.boundingRadius();
@@ -367,7 +365,10 @@ void Foam::rbd::packedBed::resume()
 }
 
 
-void Foam::rbd::packedBed::checkBlocks(const dictionary& dict)
+const Foam::dictionary& Foam::rbd::packedBed::checkBlocks
+(
+    const dictionary& dict
+)
 {
     // A misspelt block (loadng { ... }) would be ignored and its defaults
     // taken silently. Plain entries at the top level stay allowed: they
@@ -393,6 +394,34 @@ void Foam::rbd::packedBed::checkBlocks(const dictionary& dict)
             }
         }
     }
+
+    // Every entry of a block is a value: a block given where a value is
+    // expected (diameter { a 1; }) would stop OpenFOAM's reader with an
+    // abort and a stack trace. The settings of the LCP solvers
+    // (simulation/<name>Coeffs) are the only blocks within blocks.
+    for (const entry& b : dict)
+    {
+        if (!b.isDict() || b.keyword() == "FoamFile")
+        {
+            continue;
+        }
+        for (const entry& e : b.dict())
+        {
+            const bool coeffs =
+                b.keyword() == "simulation" && e.keyword().endsWith("Coeffs");
+            if (e.isDict() && !coeffs)
+            {
+                FatalIOErrorInFunction(b.dict())
+                    << "Bad entry '" << e.keyword() << "' in "
+                    << b.dict().name() << ": a block { ... } where a value "
+                    << "is expected" << nl
+                    << "    allowed: a value (number, word, switch or list)"
+                    << " as the README's packingDict tables give it"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    return dict;
 }
 
 
@@ -612,6 +641,35 @@ void Foam::rbd::packedBed::checkOutputDirectories() const
             FatalErrorInFunction
                 << "Cannot write the outputs: directory " << path
                 << " is not writable" << nl << exit(FatalError);
+        }
+    }
+
+    // ... and no directory where a file is written
+    fileNameList files(bedCaseWriter::files());
+    for
+    (
+        const word f
+      : {
+            "constant/triSurface/pellets.stl",
+            "postProcessing/rbdPackBed/summary",
+            "postProcessing/rbdPackBed/pellets.csv",
+            "postProcessing/rbdPackBed/radialPorosity.dat",
+            "postProcessing/rbdPackBed/axialPorosity.dat",
+            "postProcessing/rbdPackBed/orientation.dat",
+            "postProcessing/rbdPackBed/checkpoint"
+        }
+    )
+    {
+        files.append(f);
+    }
+    for (const fileName& f : files)
+    {
+        if (Foam::isDir(root/f))
+        {
+            FatalErrorInFunction
+                << "Cannot write the outputs: " << root/f << " is a "
+                << "directory, where rbdPackBed writes the file " << f << nl
+                << "    Remove or rename it" << nl << exit(FatalError);
         }
     }
 }

@@ -48,6 +48,9 @@ Usage
 #include "IOdictionary.H"
 #include "sigFpe.H"
 #include "packedBed.H"
+#include "IStringStream.H"
+#include <fstream>
+#include <sstream>
 
 using namespace Foam;
 
@@ -144,6 +147,22 @@ int main(int argc, char *argv[])
     autoPtr<IOdictionary> packingDictPtr;
     {
         const sigFpe::ignore noTrap;
+
+        // An entry or a block given twice is an error: OpenFOAM's reader
+        // keeps the last entry silently and merges two blocks. A first
+        // parse in its 'error' input mode stops at the second one, naming
+        // the file and the line (the directive shares the first line, so
+        // the line numbers are the file's)
+        {
+            std::ifstream file(dictIO.objectPath());
+            std::ostringstream text;
+            text << "#inputMode error " << file.rdbuf();
+            IStringStream is(text.str());
+            is.name() = dictIO.objectPath();
+            const dictionary check(is);
+            entry::resetInputMode();
+        }
+
         packingDictPtr.reset(new IOdictionary(dictIO));
     }
     const IOdictionary& packingDict = packingDictPtr();

@@ -77,6 +77,37 @@ void Foam::rbd::bedCaseSettings::setGrid()
     const scalar h = cellSize();
     const scalar R = tubeRadius();
 
+    // The counts of cells, checked in floating point first: a length of
+    // 1e9 m over cells of a millimetre overflows a label (the caller's
+    // check of the total comes after this)
+    const scalar maxCellsPerDirection = 1e9;
+    for
+    (
+        const auto& n
+      : {
+            std::make_pair("across the tube", 2*(R/h + 3)),
+            std::make_pair("along the bed (bed height)", bedHeight_/h),
+            std::make_pair("below the bed (inletLength)",
+                           inletLengthRequested_/h),
+            std::make_pair("above the bed (outletLength)",
+                           outletLengthRequested_/h)
+        }
+    )
+    {
+        if (!(n.second <= maxCellsPerDirection))
+        {
+            FatalErrorInFunction
+                << "The CFD background grid would have " << n.second
+                << " cells " << n.first << " (cells of " << h << " m: "
+                << "cfdCase/cellsPerDiameter per volume-equivalent "
+                << "diameter)" << nl
+                << "    allowed: at most " << maxCellsPerDirection
+                << "; shorten cfdCase/inletLength or outletLength, or "
+                << "lower cellsPerDiameter" << nl
+                << exit(FatalError);
+        }
+    }
+
     // Across: cells of size h, three whole cells between tube and box
     const label nXY = 2*label(std::ceil(R/h + 3));
     const scalar halfWidth = 0.5*nXY*h;
@@ -110,6 +141,15 @@ void Foam::rbd::bedCaseSettings::setGrid()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+namespace
+{
+    //- Longest inlet or outlet, per pellet diameter [-]: longer ones
+    //  give a grid of over 10^5 cells along the tube at the finest
+    //  cellsPerDiameter, far beyond the cell limit of the case
+    const Foam::scalar maxLengthPerDiameter = 1e4;
+}
+
+
 Foam::rbd::bedCaseSettings::bedCaseSettings
 (
     const scalar tubeDiameter,
@@ -132,11 +172,19 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
     wallLevel_(getLabelOrDefault(options, "wallLevel", 0, 0, 4)),
     inletLengthRequested_
     (
-        getPositiveOrDefault(options, "inletLength", 2*pelletDiameter, "m")
+        getPositiveOrDefault
+        (
+            options, "inletLength", 2*pelletDiameter, "m",
+            maxLengthPerDiameter*pelletDiameter
+        )
     ),
     outletLengthRequested_
     (
-        getPositiveOrDefault(options, "outletLength", 3*pelletDiameter, "m")
+        getPositiveOrDefault
+        (
+            options, "outletLength", 3*pelletDiameter, "m",
+            maxLengthPerDiameter*pelletDiameter
+        )
     ),
     contactTreatment_
     (

@@ -35,7 +35,9 @@ Foam::rbd::bedOutput::bedOutput
 
 void Foam::rbd::bedOutput::commit(const fileName& tmp, const fileName& target)
 {
-    if (!Foam::mv(tmp, target))
+    // Foam::mv moves a file into a directory of the target's name and
+    // reports success: the target would never be written
+    if (Foam::isDir(target) || !Foam::mv(tmp, target))
     {
         FatalErrorInFunction
             << "Cannot move " << tmp << " to " << target

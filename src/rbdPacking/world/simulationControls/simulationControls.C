@@ -101,10 +101,12 @@ Foam::rbd::simulationControls::simulationControls
     const dictionary& given
 )
 :
-    deltaT(getPositiveOrDefault(d, "deltaT", 0.025, "s")),
+    // Below a microsecond the outer intervals alone stall a run (at 1e-30
+    // s, t + deltaT == t: it never ends); above 100 g a typo
+    deltaT(getInRangeOrDefault(d, "deltaT", 0.025, 1e-6, GREAT, "s")),
     endTime(getPositiveOrDefault(d, "endTime", 30, "s")),
     endTimeGiven(d.found("endTime")),
-    gravity(getNonNegativeOrDefault(d, "gravity", 9.81, "m/s^2")),
+    gravity(getNonNegativeOrDefault(d, "gravity", 9.81, "m/s^2", 1000)),
     restingVelocity(getPositiveOrDefault(d, "restingVelocity", 0.01, "m/s")),
     slipVelocity(getPositiveOrDefault(d, "slipVelocity", 1e-4, "m/s")),
     proximity(getPositiveOrDefault(d, "proximity", 0.1, "-")),

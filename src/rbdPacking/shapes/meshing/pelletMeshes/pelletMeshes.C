@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pelletMeshes.H"
+#include <stdexcept>
+#include <string>
 #include "cgalMeshTools.H"
 #include "mathematicalConstants.H"
 #include "error.H"
@@ -327,10 +329,14 @@ namespace
         const label expected = 2*nb*nz + 2*(2*ni + nb - 2 + 2*reg.nHoles);
         if (faces.size() != expected)
         {
-            FatalErrorInFunction
-                << "Prism mesh has " << faces.size() << " triangles, expected "
-                << expected << " (cap triangulation lost points?)"
-                << exit(FatalError);
+            // Too few faces for the features of the cap (a trilobe of 40
+            // faces): pelletShape::New reports it against the entries
+            throw std::runtime_error
+            (
+                "the prism mesh has " + std::to_string(faces.size())
+              + " triangles, expected " + std::to_string(expected)
+              + ": too few faces for its cap"
+            );
         }
 
         return rbd::triMesh(std::move(points), List<triFace>(std::move(faces)));
