@@ -29,10 +29,10 @@ Foam::rbd::projectedGaussSeidelLCP::projectedGaussSeidelLCP
     lcpSolver(),
     tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-6, "-")),
     maxIterations_(getLabelOrDefault(coeffs, "maxIterations", 1000, 1)),
-    relaxation_(getInRangeOrDefault(coeffs, "relaxation", 1, 0, 2, "-")),
+    relaxation_(coeffs.getOrDefault<scalar>("relaxation", 1)),
     warmStart_(coeffs.getOrDefault<bool>("warmStart", false))
 {
-    if (relaxation_ <= 0 || relaxation_ >= 2)
+    if (!(relaxation_ > 0 && relaxation_ < 2))
     {
         badEntry(coeffs, "relaxation", relaxation_, "a number in (0, 2)");
     }

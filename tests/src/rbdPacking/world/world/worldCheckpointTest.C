@@ -73,7 +73,7 @@ TEST(worldCheckpoint, readStateContinuesBitForBit)
 
     // Both go on through more collisions and sleep
     const label sleepingBefore = a().nSleeping();
-    const label collisionsBefore = a().stats().collisions;
+    const std::int64_t collisionsBefore = a().stats().collisions;
     a().advance(1.0);
     b().advance(1.0);
     EXPECT_EQ(b().stats().steps, a().stats().steps);
