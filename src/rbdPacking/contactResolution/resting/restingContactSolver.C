@@ -64,6 +64,13 @@ namespace
         return a;
     }
 
+    //- Whether body b of contact c moves with the contact forces: i, and
+    //  k where it is a pellet awake (as applyForce below)
+    bool movedBy(const contact& c, const label b, const boolList& fixed)
+    {
+        return b == c.i || (b == c.k && b >= 0 && !fixed[b]);
+    }
+
     //- Apply force f at the contact: +f to i, -f to k
     void applyForce
     (
@@ -175,11 +182,7 @@ Foam::rbd::restingContactSolver::solve
     {
         for (const label b : {c.i, c.k})
         {
-            if
-            (
-                (b == c.i || (b >= 0 && !fixed[b]))
-             && !buf_.listed[b]
-            )
+            if (movedBy(c, b, fixed) && !buf_.listed[b])
             {
                 buf_.listed[b] = true;
                 moved.push_back(b);
@@ -519,7 +522,7 @@ Foam::rbd::restingContactSolver::solve
             const contact& c = contacts[ci];
             for (const label b : {c.i, c.k})
             {
-                if (b == c.i || (b >= 0 && !fixed[b]))
+                if (movedBy(c, b, fixed))
                 {
                     Ftot[b] = Fext[b];
                     tauTot[b] = tauExt[b];
