@@ -5,7 +5,8 @@
 # that never stopped, bit for bit (spheres, and cylinders on meshes with
 # the coupled friction solve); a settled run removes its checkpoint; the
 # wall-clock interval writes checkpoints while running. Refused: -resume
-# without a checkpoint, with a dictionary that packs differently, with a
+# without a checkpoint, with an endTime not beyond the checkpoint's time,
+# with a dictionary that packs differently, with a
 # file that is not a checkpoint or is truncated; none of them writes any
 # output.
 #------------------------------------------------------------------------------
@@ -133,6 +134,10 @@ foamDictionary "$tmp/endTimeChanged/system/packingDict" -entry cfdCase/cellsPerD
 rbdPackBed -case "$tmp/endTimeChanged" -resume > "$tmp/endTimeChanged.log" 2>&1
 check "endTime and cfdCase may change: resumed to the new endTime" \
     "[ \$? -eq 0 ] && grep -q 'Simulated 0.7 s' $tmp/endTimeChanged.log"
+
+cp -r "$tmp/often" "$tmp/endTimeBefore"
+foamDictionary "$tmp/endTimeBefore/system/packingDict" -entry simulation/endTime -set 0.3 >/dev/null
+refused "endTime before the checkpoint's time" "$tmp/endTimeBefore" "allowed: a time beyond the checkpoint's, t = 0.5 s"
 
 cp -r "$tmp/often" "$tmp/garbage"
 echo "not a checkpoint" > "$tmp/garbage/$out/checkpoint"

@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dictionaryChecks.H"
+#include "OStringStream.H"
+#include "Switch.H"
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
@@ -173,6 +175,53 @@ Foam::label Foam::rbd::getLabelOrDefault
         );
     }
     return value;
+}
+
+
+bool Foam::rbd::getSwitchOrDefault
+(
+    const dictionary& dict,
+    const word& key,
+    const bool deflt
+)
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e)
+    {
+        return deflt;
+    }
+
+    const string allowed("true | false (or on | off, yes | no, 1 | 0)");
+    if (e->isDict())
+    {
+        badEntry(dict, key, "{ ... }", allowed);
+    }
+
+    ITstream& is = e->stream();
+    is.rewind();
+    OStringStream given;
+    for (const token& t : is)
+    {
+        given << (given.str().empty() ? "" : " ") << t;
+    }
+
+    if (is.size() == 1)
+    {
+        const token& t = is[0];
+        if (t.isWord())
+        {
+            const Switch sw(t.wordToken(), true);
+            if (sw.valid())
+            {
+                return bool(sw);
+            }
+        }
+        else if (t.isLabel() && (t.labelToken() == 0 || t.labelToken() == 1))
+        {
+            return t.labelToken() == 1;
+        }
+    }
+    badEntry(dict, key, given.str().c_str(), allowed);
 }
 
 

@@ -154,7 +154,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     }
 
     // Rotation: spheres without friction never pick up spin
-    rotates_ = pelletsDict.getOrDefault<bool>("rotation", true);
+    rotates_ = getSwitchOrDefault(pelletsDict, "rotation", true);
     if
     (
         shape.isSphere() && material_.friction == 0 && tube_.friction() == 0
@@ -355,6 +355,23 @@ void Foam::rbd::packedBed::resume()
                 << "    Delete it and run without -resume."
                 << exit(FatalError);
         }
+    }
+
+    // Nothing to go on with: an error, not a run that ends at once "not
+    // settled" with exit 0
+    if (world_->time() >= controls_.endTime - 1e-12)
+    {
+        badEntry
+        (
+            controls_.dict, "endTime", controls_.endTime,
+            "a time beyond the checkpoint's, t = "
+          + Foam::name(world_->time()) + " s [s], to go on from it"
+          + (
+                controls_.endTimeGiven
+              ? string()
+              : string(" (endTime is not given: this is its default)")
+            )
+        );
     }
 
     resumed_ = true;

@@ -225,7 +225,7 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
     velocity_(0),
     nIterations_(getLabelOrDefault(options, "nIterations", 2000, 1)),
     nProcessors_(getLabelOrDefault(options, "nProcessors", 2, 1)),
-    overwrite_(options.getOrDefault<bool>("overwrite", false)),
+    overwrite_(getSwitchOrDefault(options, "overwrite", false)),
     binarySTL_
     (
         getChoiceOrDefault

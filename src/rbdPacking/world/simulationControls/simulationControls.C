@@ -27,6 +27,12 @@ const Foam::wordList Foam::rbd::simulationControls::presets
 });
 
 
+const Foam::scalar Foam::rbd::simulationControls::maxThresholdVelocity = 1;
+
+
+const Foam::scalar Foam::rbd::simulationControls::maxWakeVelocity = 100;
+
+
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
 Foam::dictionary Foam::rbd::simulationControls::presetEntries
@@ -107,8 +113,10 @@ Foam::rbd::simulationControls::simulationControls
     endTime(getPositiveOrDefault(d, "endTime", 30, "s")),
     endTimeGiven(d.found("endTime")),
     gravity(getNonNegativeOrDefault(d, "gravity", 9.81, "m/s^2", 1000)),
-    restingVelocity(getPositiveOrDefault(d, "restingVelocity", 0.01, "m/s")),
-    slipVelocity(getPositiveOrDefault(d, "slipVelocity", 1e-4, "m/s")),
+    restingVelocity(getPositiveOrDefault(d, "restingVelocity", 0.01, "m/s",
+        maxThresholdVelocity)),
+    slipVelocity(getPositiveOrDefault(d, "slipVelocity", 1e-4, "m/s",
+        maxThresholdVelocity)),
     proximity(getPositiveOrDefault(d, "proximity", 0.1, "-")),
     neighbourSkin(getInRangeOrDefault(d, "neighbourSkin", 0.5, 0.01, 4,
         "-")),
@@ -118,17 +126,19 @@ Foam::rbd::simulationControls::simulationControls
     maxSweeps(getLabelOrDefault(d, "maxSweeps", 200, 1)),
     collisionTolerance(getInRangeOrDefault(d, "collisionTolerance", 1e-3,
         1e-9, 0.1, "-")),
-    sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0.001, "m/s")),
+    sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0.001, "m/s",
+        maxThresholdVelocity)),
     sleepTime(getPositiveOrDefault(d, "sleepTime", 0.2, "s")),
     wakeVelocity
     (
         getPositiveOrDefault
         (
-            d, "wakeVelocity", max(scalar(0.3), restingVelocity), "m/s"
+            d, "wakeVelocity", max(scalar(0.3), restingVelocity), "m/s",
+            maxWakeVelocity
         )
     ),
     settleTime(getPositiveOrDefault(d, "settleTime", 0.5, "s")),
-    settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-")),
+    settleEnergy(getPositiveOrDefault(d, "settleEnergy", 1e-6, "-", 1)),
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
     checkpointInterval
     (

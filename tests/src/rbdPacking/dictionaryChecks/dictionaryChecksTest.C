@@ -87,3 +87,36 @@ TEST(dictionaryChecksDeath, rejectsValuesAboveTheirBound)
     );
     EXPECT_DOUBLE_EQ(rbd::getPositive(parse("a 1e5;"), "a", "-", 1e5), 1e5);
 }
+
+
+TEST(dictionaryChecks, readsSwitchesByTheirNames)
+{
+    const dictionary d = parse("a true; b off; c yes; d 0; e 1; f none;");
+    EXPECT_TRUE(rbd::getSwitchOrDefault(d, "a", false));
+    EXPECT_FALSE(rbd::getSwitchOrDefault(d, "b", true));
+    EXPECT_TRUE(rbd::getSwitchOrDefault(d, "c", false));
+    EXPECT_FALSE(rbd::getSwitchOrDefault(d, "d", true));
+    EXPECT_TRUE(rbd::getSwitchOrDefault(d, "e", false));
+    EXPECT_FALSE(rbd::getSwitchOrDefault(d, "f", true));
+    EXPECT_TRUE(rbd::getSwitchOrDefault(d, "absent", true));
+    EXPECT_FALSE(rbd::getSwitchOrDefault(d, "absent", false));
+}
+
+
+TEST(dictionaryChecksDeath, rejectsSwitchesThatAreNotOne)
+{
+    // A bare bool reads any label and any number as true or false
+    const dictionary d =
+        parse("n 2; x 0.5; w maybe; two true false; b { a 1; }");
+    for (const char* key : {"n", "x", "w", "two", "b"})
+    {
+        EXPECT_EXIT
+        (
+            rbd::getSwitchOrDefault(d, key, true),
+            ::testing::ExitedWithCode(1),
+            "Bad entry '"
+          + std::string(key)
+          + " .*;'(.|\n)*allowed: true \\| false"
+        ) << key;
+    }
+}

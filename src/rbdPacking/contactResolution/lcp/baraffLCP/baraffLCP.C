@@ -169,7 +169,7 @@ Foam::rbd::baraffLCP::baraffLCP(const dictionary& coeffs)
     ),
     updateFactorisation_
     (
-        coeffs.getOrDefault<bool>("updateFactorisation", true)
+        getSwitchOrDefault(coeffs, "updateFactorisation", true)
     )
 {
     checkKnownEntries

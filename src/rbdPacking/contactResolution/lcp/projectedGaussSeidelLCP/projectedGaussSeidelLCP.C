@@ -30,7 +30,7 @@ Foam::rbd::projectedGaussSeidelLCP::projectedGaussSeidelLCP
     tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-6, "-")),
     maxIterations_(getLabelOrDefault(coeffs, "maxIterations", 1000, 1)),
     relaxation_(coeffs.getOrDefault<scalar>("relaxation", 1)),
-    warmStart_(coeffs.getOrDefault<bool>("warmStart", false))
+    warmStart_(getSwitchOrDefault(coeffs, "warmStart", false))
 {
     if (!(relaxation_ > 0 && relaxation_ < 2))
     {
