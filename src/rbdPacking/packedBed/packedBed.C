@@ -10,6 +10,7 @@
 #include "OSspecific.H"
 #include "boundBox.H"
 #include "checkpoint.H"
+#include "HashSet.H"
 #include <memory>
 #include <unistd.h>
 
@@ -637,14 +638,22 @@ void Foam::rbd::packedBed::checkOutputDirectories() const
             << "Cannot write into the case directory " << root << nl
             << exit(FatalError);
     }
-    for
-    (
-        const word dir
-      : {
-            "constant", "constant/triSurface", "postProcessing",
-            "postProcessing/rbdPackBed", "system", "0"
+    // Every file the run writes: the CFD case, the analysis, the
+    // checkpoint; the names are their writers'
+    fileNameList files(bedCaseWriter::files());
+    files.append(bedOutput::files());
+    files.append(checkpoint::path(root).relative(root));
+
+    // ... their directories, parents first, are directories and writable
+    wordHashSet dirs;
+    for (const fileName& f : files)
+    {
+        for (fileName d = f.path(); !d.empty() && d != "."; d = d.path())
+        {
+            dirs.insert(d);
         }
-    )
+    }
+    for (const word& dir : dirs.sortedToc())
     {
         const fileName path(root/dir);
         if (Foam::exists(path, false) && !Foam::isDir(path))
@@ -661,24 +670,7 @@ void Foam::rbd::packedBed::checkOutputDirectories() const
         }
     }
 
-    // ... and no directory where a file is written
-    fileNameList files(bedCaseWriter::files());
-    for
-    (
-        const word f
-      : {
-            "constant/triSurface/pellets.stl",
-            "postProcessing/rbdPackBed/summary",
-            "postProcessing/rbdPackBed/pellets.csv",
-            "postProcessing/rbdPackBed/radialPorosity.dat",
-            "postProcessing/rbdPackBed/axialPorosity.dat",
-            "postProcessing/rbdPackBed/orientation.dat",
-            "postProcessing/rbdPackBed/checkpoint"
-        }
-    )
-    {
-        files.append(f);
-    }
+    // ... and no directory is where a file goes
     for (const fileName& f : files)
     {
         if (Foam::isDir(root/f))

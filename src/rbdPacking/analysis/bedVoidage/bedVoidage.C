@@ -43,6 +43,18 @@ namespace
     }
 }
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::word Foam::rbd::bedVoidage::radialFile("radialPorosity.dat");
+
+const Foam::word Foam::rbd::bedVoidage::axialFile("axialPorosity.dat");
+
+const Foam::word Foam::rbd::bedVoidage::correlationsFile
+(
+    "radialCorrelations.dat"
+);
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
 void Foam::rbd::bedVoidage::checkBins(const label nBins, const char* what)
@@ -490,16 +502,16 @@ void Foam::rbd::bedVoidage::write
 {
     mkDir(dir);
     {
-        OFstream os(dir/"radialPorosity.dat");
+        OFstream os(dir/radialFile);
         writeRadialProfile(os, nRadialBins, dp, sphereCorrelations);
     }
     {
-        OFstream os(dir/"axialPorosity.dat");
+        OFstream os(dir/axialFile);
         writeAxialProfile(os, nAxialBins);
     }
     if (sphereCorrelations)
     {
-        OFstream os(dir/"radialCorrelations.dat");
+        OFstream os(dir/correlationsFile);
         writeSphereCorrelations(os, correlationPoints, dp);
     }
 }

@@ -11,6 +11,10 @@
 
 using Foam::constant::mathematical::pi;
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::word Foam::rbd::orientationStatistics::file("orientation.dat");
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::rbd::orientationStatistics::orientationStatistics
@@ -122,7 +126,7 @@ void Foam::rbd::orientationStatistics::write
 ) const
 {
     mkDir(dir);
-    OFstream os(dir/"orientation.dat");
+    OFstream os(dir/file);
     write(os, nBins);
 }
 

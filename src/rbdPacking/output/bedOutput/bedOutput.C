@@ -13,6 +13,42 @@
 #include "contactGeometry.H"
 #include "stlIO.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::fileName Foam::rbd::bedOutput::directoryName
+(
+    "postProcessing/rbdPackBed"
+);
+
+const Foam::fileName Foam::rbd::bedOutput::stlName
+(
+    "constant/triSurface/pellets.stl"
+);
+
+const Foam::word Foam::rbd::bedOutput::pelletsName("pellets.csv");
+
+const Foam::word Foam::rbd::bedOutput::summaryName("summary");
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::fileNameList Foam::rbd::bedOutput::files()
+{
+    fileNameList names
+    ({
+        stlName,
+        directoryName/pelletsName,
+        directoryName/summaryName,
+        directoryName/orientationStatistics::file
+    });
+    for (const word& f : bedVoidage::files())
+    {
+        names.append(directoryName/f);
+    }
+    return names;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::bedOutput::bedOutput
@@ -23,8 +59,8 @@ Foam::rbd::bedOutput::bedOutput
     const UList<rigidBody>& bodies
 )
 :
-    dir_(casePath/"postProcessing"/"rbdPackBed"),
-    stl_(casePath/"constant"/"triSurface"/"pellets.stl"),
+    dir_(casePath/directoryName),
+    stl_(casePath/stlName),
     tube_(container),
     shape_(shape),
     bodies_(bodies)
@@ -49,7 +85,7 @@ void Foam::rbd::bedOutput::commit(const fileName& tmp, const fileName& target)
 void Foam::rbd::bedOutput::writePellets() const
 {
     mkDir(dir_);
-    const fileName target(dir_/"pellets.csv");
+    const fileName target(dir_/pelletsName);
     const fileName tmp(target + ".tmp");
     {
         OFstream os(tmp);
@@ -269,7 +305,7 @@ void Foam::rbd::bedOutput::writeOrientation
 void Foam::rbd::bedOutput::writeSummary(const dictionary& summary) const
 {
     mkDir(dir_);
-    const fileName target(dir_/"summary");
+    const fileName target(dir_/summaryName);
     const fileName tmp(target + ".tmp");
     {
         OFstream os(tmp);
