@@ -239,6 +239,33 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
 {
     checkKnownEntries(options, knownEntries);
 
+    // An entry of another contact treatment has no effect: say so (an
+    // edit there would be lost silently)
+    {
+        const std::initializer_list<std::pair<const char*, wordList>> usedBy
+        {
+            {"shrinkFactor", wordList({"shrink"})},
+            {"bridgeDiameter", wordList({"bridges"})},
+            {"capHeight", wordList({"caps"})},
+            {"contactGap", wordList({"bridges", "caps"})}
+        };
+        for (const auto& e : usedBy)
+        {
+            if
+            (
+                options.found(e.first, keyType::LITERAL)
+             && !e.second.found(contactTreatment_)
+            )
+            {
+                WarningInFunction
+                    << e.first << " in " << options.name()
+                    << " is ignored: contactTreatment is "
+                    << contactTreatment_ << " (" << e.first
+                    << " is for " << e.second << ")" << endl;
+            }
+        }
+    }
+
     if (!(tubeDiameter_ > 0) || !(pelletDiameter_ > 0))
     {
         FatalErrorInFunction

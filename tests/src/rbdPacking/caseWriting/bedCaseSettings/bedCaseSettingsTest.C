@@ -237,3 +237,36 @@ TEST(bedCaseSettingsDeath, rejectsBadOptionsBeforeTheBedHeight)
         "Unknown entry 'pelletLevl'"
     );
 }
+
+
+TEST(bedCaseSettings, warnsOfEntriesOfAnotherContactTreatment)
+{
+    const auto warnings = [](const char* options)
+    {
+        ::testing::internal::CaptureStdout();
+        ::testing::internal::CaptureStderr();
+        make(options);
+        return
+            ::testing::internal::GetCapturedStdout()
+          + ::testing::internal::GetCapturedStderr();
+    };
+
+    const std::string w = warnings
+    (
+        "contactTreatment shrink; shrinkFactor 0.98; bridgeDiameter 0.002;"
+        " contactGap 1e-4;"
+    );
+    EXPECT_NE(w.find("bridgeDiameter in"), std::string::npos) << w;
+    EXPECT_NE(w.find("is ignored: contactTreatment is shrink"),
+        std::string::npos) << w;
+    EXPECT_NE(w.find("contactGap in"), std::string::npos) << w;
+    EXPECT_EQ(w.find("shrinkFactor in"), std::string::npos) << w;
+
+    // Every entry used: no warning
+    EXPECT_EQ
+    (
+        warnings("contactTreatment caps; capHeight 1e-4; contactGap 1e-4;")
+            .find("is ignored"),
+        std::string::npos
+    );
+}
