@@ -81,29 +81,48 @@ void Foam::rbd::bedCaseSettings::setGrid()
     // 1e9 m over cells of a millimetre overflows a label (the caller's
     // check of the total comes after this)
     const scalar maxCellsPerDirection = 1e9;
+    struct direction
+    {
+        const char* where;
+        scalar cells;
+        const char* remedy;
+    };
     for
     (
-        const auto& n
+        const direction& n
       : {
-            std::make_pair("across the tube", 2*(R/h + 3)),
-            std::make_pair("along the bed (bed height)", bedHeight_/h),
-            std::make_pair("below the bed (inletLength)",
-                           inletLengthRequested_/h),
-            std::make_pair("above the bed (outletLength)",
-                           outletLengthRequested_/h)
+            direction
+            {
+                "across the tube", 2*(R/h + 3),
+                "lower cellsPerDiameter or the tube diameter"
+            },
+            direction
+            {
+                "along the bed (bed height)", bedHeight_/h,
+                "lower cellsPerDiameter or the number of pellets"
+            },
+            direction
+            {
+                "below the bed (inletLength)", inletLengthRequested_/h,
+                "shorten cfdCase/inletLength or lower cellsPerDiameter"
+            },
+            direction
+            {
+                "above the bed (outletLength)", outletLengthRequested_/h,
+                "shorten cfdCase/outletLength or lower cellsPerDiameter"
+            }
         }
     )
     {
-        if (!(n.second <= maxCellsPerDirection))
+        if (!(n.cells <= maxCellsPerDirection))
         {
             FatalErrorInFunction
-                << "The CFD background grid would have " << n.second
-                << " cells " << n.first << " (cells of " << h << " m: "
+                << "The CFD background grid would have " << n.cells
+                << " cells " << n.where << " (cells of " << h << " m: "
                 << "cfdCase/cellsPerDiameter per volume-equivalent "
                 << "diameter)" << nl
                 << "    allowed: at most " << maxCellsPerDirection
-                << "; shorten cfdCase/inletLength or outletLength, or "
-                << "lower cellsPerDiameter" << nl
+                << "; " << n.remedy << nl
                 << exit(FatalError);
         }
     }
