@@ -108,8 +108,10 @@ Foam::rbd::simulationControls::simulationControls
 )
 :
     // Below a microsecond the outer intervals alone stall a run (at 1e-30
-    // s, t + deltaT == t: it never ends); above 100 g a typo
-    deltaT(getInRangeOrDefault(d, "deltaT", 0.025, 1e-6, GREAT, "s")),
+    // s, t + deltaT == t: it never ends); above a second the tests of the
+    // outer intervals (release, settling, log) all but stop (1e14 s hung
+    // a run); above 100 g a typo
+    deltaT(getInRangeOrDefault(d, "deltaT", 0.025, 1e-6, 1, "s")),
     endTime(getPositiveOrDefault(d, "endTime", 30, "s")),
     endTimeGiven(d.found("endTime")),
     gravity(getNonNegativeOrDefault(d, "gravity", 9.81, "m/s^2", 1000)),
@@ -187,6 +189,15 @@ Foam::rbd::simulationControls::simulationControls
         }
     }
 
+    // The run stops at the end of the outer interval that reaches endTime
+    if (deltaT > endTime)
+    {
+        badEntry
+        (
+            d, "deltaT", deltaT,
+            "a number in [1e-06, endTime (" + Foam::name(endTime) + ")] [s]"
+        );
+    }
     if (proximity > 1)
     {
         badEntry(d, "proximity", proximity, "a number in (0, 1] [-]");

@@ -254,3 +254,28 @@ TEST(sleep, onlyAHitFasterThanWakeVelocityWakesTheBed)
         }
     }
 }
+
+
+TEST(sleep, aPelletStillInTheAirStaysAwake)
+{
+    // At gravity 0.005 m/s^2 a released sphere moves 0.1 mm in its first
+    // 0.2 s, well under sleepVelocity sleepTime (2 mm): still by the
+    // mean-speed test, but touching nothing, so it may not sleep; it
+    // falls freely, z = z0 - g t^2/2
+    sphereScene s
+    (
+        0.1, d, 0.1, 0.5, 0.1, 0.5,
+        "gravity 0.005; sleepVelocity 0.01; sleepTime 0.2; deltaT 0.01;"
+    );
+    const scalar z0 = 0.5;
+    s().addBody(point(0, 0, z0), quaternion(1));
+    while (s().time() < 1 - 1e-9)
+    {
+        s().advance(0.01);
+        ASSERT_EQ(s().nSleeping(), 0) << "t = " << s().time();
+    }
+    EXPECT_NEAR
+    (
+        s().bodies()[0].x().z(), z0 - 0.5*0.005*sqr(s().time()), 1e-9
+    );
+}
