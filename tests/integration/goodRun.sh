@@ -63,6 +63,13 @@ cp "$here/cases/smallSpheres/system/packingDict" "$tmp/otherDict"
 rbdPackBed -case "$tmp/d" -dict "$tmp/otherDict" > "$tmp/d.log" 2>&1
 check "-dict reads another dictionary" "[ \$? -eq 0 ] && cmp -s $out/pellets.csv $tmp/d/postProcessing/rbdPackBed/pellets.csv"
 
+# -dict naming a file the run writes (system/controlDict): refused before
+# it is overwritten
+cp "$tmp/otherDict" "$tmp/d/system/controlDict"
+rbdPackBed -case "$tmp/d" -dict "$tmp/d/system/controlDict" -overwrite > "$tmp/dc.log" 2>&1
+check "-dict system/controlDict: refused, the file kept" \
+    "[ \$? -ne 0 ] && grep -q 'is the file \"system/controlDict\" that rbdPackBed writes' $tmp/dc.log && cmp -s $tmp/otherDict $tmp/d/system/controlDict"
+
 rbdPackBed -help > "$tmp/help.log" 2>&1
 check "-help lists -dict and -case" "grep -q -- '-dict' $tmp/help.log && grep -q -- '-case' $tmp/help.log"
 check "-help names the dictionary, the outputs and an example" \

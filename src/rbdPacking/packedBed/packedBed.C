@@ -13,6 +13,8 @@
 #include "HashSet.H"
 #include <memory>
 #include <unistd.h>
+#include <climits>
+#include <cstdlib>
 
 using Foam::constant::mathematical::pi;
 
@@ -667,6 +669,49 @@ void Foam::rbd::packedBed::checkOutputDirectories() const
             FatalErrorInFunction
                 << "Cannot write the outputs: directory " << path
                 << " is not writable" << nl << exit(FatalError);
+        }
+    }
+
+    // ... no input is one of them (a pellet STL kept as
+    // constant/triSurface/pellets.stl, -dict system/controlDict): it would
+    // be overwritten
+    const auto sameFile = [](const fileName& a, const fileName& b)
+    {
+        char ra[PATH_MAX], rb[PATH_MAX];
+        return
+            ::realpath(a.c_str(), ra) && ::realpath(b.c_str(), rb)
+         && std::string(ra) == std::string(rb);
+    };
+    const dictionary& pellets = packingDict_.subDict("pellets");
+    fileName stl;
+    if (pellets.getOrDefault<word>("shape", "") == "stl")
+    {
+        stl = pellets.get<fileName>("file");
+        stl.expand();
+        if (!stl.isAbsolute())
+        {
+            stl = root/stl;
+        }
+    }
+    for (const fileName& f : files)
+    {
+        if (sameFile(dictName_, root/f))
+        {
+            FatalErrorInFunction
+                << "The packing dictionary " << dictName_.c_str()
+                << " is the file " << f << " that rbdPackBed writes" << nl
+                << "    Give -dict a dictionary of its own" << nl
+                << exit(FatalError);
+        }
+        if (!stl.empty() && sameFile(stl, root/f))
+        {
+            badEntry
+            (
+                pellets, "file", pellets.get<fileName>("file"),
+                "an STL file that rbdPackBed does not write (" + f
+              + " is its output): keep the pellet elsewhere, e.g. "
+                "constant/pellet.stl"
+            );
         }
     }
 
