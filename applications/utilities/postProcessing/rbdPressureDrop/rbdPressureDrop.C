@@ -32,7 +32,6 @@ Usage
 
 #include "argList.H"
 #include "pressureDropComparison.H"
-#include <cmath>
 
 using namespace Foam;
 
@@ -62,17 +61,11 @@ int main(int argc, char *argv[])
         args.path(),
         args.getOrDefault<word>("shape", word::null)
     );
+    // (the constructor refuses a pressure drop that is not positive, a
+    // flow rate that is not, and a viscosity out of range: nothing is
+    // written then)
     comparison.report(Info);
     Info<< nl << "Wrote " << comparison.writeFile() << nl << endl;
-
-    const scalar s = comparison.simulated();
-    if (!std::isfinite(s) || !(s > 0))
-    {
-        FatalErrorInFunction
-            << "The simulated pressure drop " << s << " m/s^2 is not a"
-            << " positive number: has simpleFoam converged?"
-            << exit(FatalError);
-    }
 
     Info<< "End\n" << endl;
 

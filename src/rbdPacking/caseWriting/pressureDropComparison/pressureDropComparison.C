@@ -12,6 +12,7 @@
 #include "Pair.H"
 #include "mathematicalConstants.H"
 #include "dimensionedScalar.H"
+#include <cmath>
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
@@ -21,6 +22,9 @@ const Foam::wordList Foam::rbd::pressureDropComparison::shapes
     "spheres",
     "cylinders"
 });
+
+
+const Foam::scalar Foam::rbd::pressureDropComparison::maxVelocity = 1000;
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -180,6 +184,14 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
         readFoamFile(caseDir_/"constant/transportProperties")
     );
     nu_ = dimensionedScalar("nu", dimArea/dimTime, transport).value();
+    if (!(nu_ > 0 && nu_ <= 1))
+    {
+        FatalIOErrorInFunction(transport)
+            << "Bad entry 'nu " << nu_ << "' in "
+            << caseDir_/"constant/transportProperties" << nl
+            << "    allowed: a kinematic viscosity in (0, 1] [m^2/s]"
+            << exit(FatalIOError);
+    }
     if (transport.found("rho"))
     {
         rho_ = dimensionedScalar("rho", dimMass/dimVolume, transport).value();
@@ -206,10 +218,29 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
 
     const scalar area =
         0.25*constant::mathematical::pi*sqr(tubeDiameter_);
-    velocity_ = mag(lastValue(caseDir_, bedCaseWriter::flowRateObject)[1])
-       /area;
+    const scalar flowRate =
+        lastValue(caseDir_, bedCaseWriter::flowRateObject)[1];
+    velocity_ = mag(flowRate)/area;
+    if (!(velocity_ > 0 && velocity_ <= maxVelocity))
+    {
+        FatalErrorInFunction
+            << "The flow rate " << flowRate << " m^3/s of "
+            << caseDir_/"postProcessing"/bedCaseWriter::flowRateObject
+            << " gives a superficial velocity of " << velocity_ << " m/s"
+            << nl << "    allowed: (0, " << maxVelocity << "] m/s; has"
+            << " simpleFoam run and converged?" << exit(FatalError);
+    }
     pBottom_ = lastValue(caseDir_, bedCaseWriter::bedBottomObject)[1];
     pTop_ = lastValue(caseDir_, bedCaseWriter::bedTopObject)[1];
+    const scalar s = simulated();
+    if (!(std::isfinite(s) && s > 0))
+    {
+        FatalErrorInFunction
+            << "The simulated pressure drop (" << pBottom_ << " - " << pTop_
+            << ")/" << length_ << " = " << s << " m/s^2 (kinematic, from "
+            << caseDir_/"postProcessing" << ") is not a positive number:"
+            << " has simpleFoam converged?" << exit(FatalError);
+    }
 }
 
 

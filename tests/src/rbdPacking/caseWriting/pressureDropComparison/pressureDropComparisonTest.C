@@ -238,3 +238,51 @@ TEST(pressureDropComparisonDeath, rejectsShapesWithoutConstants)
         "pellets of shape 'ring'(.|\n)*spheres(.|\n)*cylinders"
     );
 }
+
+
+TEST(pressureDropComparisonDeath, rejectsResultsOfNoFlowOrAbsurdInputs)
+{
+    // Each once a SIGFPE (zero flow rate, nu 0, a flow rate of 1e300) or
+    // a comparison written for a negative or infinite pressure drop
+    const caseWritingTest::tempDir tmp;
+    const fileName c(tmp.path());
+    writeCase(c);
+    writeDat(c, "flowRate", "100", "sum(phi)", {0, 0});
+    EXPECT_EXIT
+    (
+        rbd::pressureDropComparison(c).simulated(),
+        ::testing::ExitedWithCode(1),
+        "superficial velocity of 0 m/s(.|\n)*allowed: \\(0, 1000\\] m/s"
+    );
+    writeDat(c, "flowRate", "100", "sum(phi)", {1e300});
+    EXPECT_EXIT
+    (
+        rbd::pressureDropComparison(c).simulated(),
+        ::testing::ExitedWithCode(1),
+        "allowed: \\(0, 1000\\] m/s"
+    );
+    writeDat(c, "flowRate", "100", "sum(phi)", {-2e-6, -1.25e-6});
+    writeDat(c, "pBedTop", "100", "areaAverage(p)", {0.5, 0.5});
+    EXPECT_EXIT
+    (
+        rbd::pressureDropComparison(c).simulated(),
+        ::testing::ExitedWithCode(1),
+        "simulated pressure drop .* is not a positive number"
+    );
+    writeDat(c, "pBedTop", "100", "areaAverage(p)", {0.02, 0.01});
+    for (const char* nu : {"0", "-1", "1e10"})
+    {
+        rbd::writeFoamFile
+        (
+            c/"constant/transportProperties", "dictionary",
+            std::string("transportModel Newtonian; nu ") + nu + ";"
+        );
+        EXPECT_EXIT
+        (
+            rbd::pressureDropComparison(c).simulated(),
+            ::testing::ExitedWithCode(1),
+            "Bad entry 'nu .*(.|\n)*allowed: a kinematic viscosity in"
+            " \\(0, 1\\]"
+        ) << nu;
+    }
+}
