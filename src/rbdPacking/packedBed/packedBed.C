@@ -715,7 +715,8 @@ void Foam::rbd::packedBed::checkOutputDirectories() const
         }
     }
 
-    // ... and no directory is where a file goes
+    // ... and no directory is where a file goes, and no file there is
+    // read-only (found after packing, it left a half-written case)
     for (const fileName& f : files)
     {
         if (Foam::isDir(root/f))
@@ -724,6 +725,16 @@ void Foam::rbd::packedBed::checkOutputDirectories() const
                 << "Cannot write the outputs: " << root/f << " is a "
                 << "directory, where rbdPackBed writes the file " << f << nl
                 << "    Remove or rename it" << nl << exit(FatalError);
+        }
+        if
+        (
+            Foam::isFile(root/f, false)
+         && ::access((root/f).c_str(), W_OK) != 0
+        )
+        {
+            FatalErrorInFunction
+                << "Cannot write the outputs: " << root/f << " is not "
+                << "writable" << nl << exit(FatalError);
         }
     }
 }
