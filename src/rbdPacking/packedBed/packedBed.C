@@ -86,6 +86,20 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         );
     }
 
+    // ... and be tall enough to release one: more than its bounding
+    // diameter (else the default releaseHeight, which the message would
+    // name, is below the floor)
+    if (tube_.height() <= 2*rb)
+    {
+        badEntry
+        (
+            containerDict, "height", tube_.height(),
+            "a height above the pellets' bounding diameter "
+          + Foam::name(2*rb) + " [m] (pellet shape " + shape.type()
+          + "), and enough to hold the bed"
+        );
+    }
+
     checkPelletSize(pelletsDict);
 
     checkControls();
