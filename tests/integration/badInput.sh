@@ -62,6 +62,37 @@ endloop
 endfacet
 endsolid open
 STL
+            elif [ "$2" = fine ]
+            then
+                # a closed, outward cube of 12 x 130^2 = 202800 triangles
+                # (binary), more than pelletShape::maxFaces
+                mkdir -p "$tmp/case/constant"
+                /usr/bin/python3 - "$tmp/case/constant/pellet.stl" <<'PY'
+import struct, sys
+n = 130
+tris = []
+for axis in range(3):
+    for side in (0, 1):
+        for i in range(n):
+            for j in range(n):
+                def p(a, b):
+                    q = [0.0, 0.0, 0.0]
+                    q[axis] = float(side)
+                    q[(axis + 1) % 3] = a / n
+                    q[(axis + 2) % 3] = b / n
+                    return q
+                a, b, c, d = p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)
+                nrm = [0.0, 0.0, 0.0]
+                nrm[axis] = 1.0 if side else -1.0
+                if side:
+                    tris += [(nrm, a, b, c), (nrm, a, c, d)]
+                else:
+                    tris += [(nrm, a, c, b), (nrm, a, d, c)]
+with open(sys.argv[1], 'wb') as f:
+    f.write(b'\0' * 80 + struct.pack('<I', len(tris)))
+    for t in tris:
+        f.write(struct.pack('<12fH', *(t[0] + t[1] + t[2] + t[3]), 0))
+PY
             fi ;;
     casefile) # -case names a file, not a directory
             touch "$tmp/notADirectory"; caseArg="$tmp/notADirectory" ;;

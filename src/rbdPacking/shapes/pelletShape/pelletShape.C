@@ -24,6 +24,11 @@ const Foam::wordList Foam::rbd::pelletShape::commonEntries
 });
 
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::label Foam::rbd::pelletShape::maxFaces = 200000;
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::pelletShape::pelletShape
@@ -35,7 +40,7 @@ Foam::rbd::pelletShape::pelletShape
     faces_
     (
         dict.found("faces")
-      ? getLabelOrDefault(dict, "faces", defaultFaces, 20, 200000)
+      ? getLabelOrDefault(dict, "faces", defaultFaces, 20, maxFaces)
       : defaultFaces
     ),
     mesh_()

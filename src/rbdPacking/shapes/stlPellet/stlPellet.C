@@ -60,6 +60,17 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
         );
     }
 
+    if (surface.nFaces() > maxFaces)
+    {
+        badEntry
+        (
+            dict, "file", file_,
+            "an STL of at most " + Foam::name(maxFaces) + " triangles ("
+          + path + " has " + Foam::name(surface.nFaces())
+          + "; coarsen it)"
+        );
+    }
+
     const massProperties mp(surface, 1);
     surface_ = mp.toPrincipalFrame(surface);
     volume_ = mp.volume();
