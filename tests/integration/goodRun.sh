@@ -70,6 +70,14 @@ rbdPackBed -case "$tmp/d" -dict "$tmp/d/system/controlDict" -overwrite > "$tmp/d
 check "-dict system/controlDict: refused, the file kept" \
     "[ \$? -ne 0 ] && grep -q 'is the file \"system/controlDict\" that rbdPackBed writes' $tmp/dc.log && cmp -s $tmp/otherDict $tmp/d/system/controlDict"
 
+# A run shorter than settleTime: it runs to endTime, and says it cannot
+# settle
+cp -r "$here/cases/smallSpheres" "$tmp/short"
+foamDictionary "$tmp/short/system/packingDict" -entry simulation/endTime -set 0.3 >/dev/null
+rbdPackBed -case "$tmp/short" > "$tmp/short.log" 2>&1
+check "endTime below settleTime: exit 0 and a warning" \
+    "[ \$? -eq 0 ] && grep -q 'settleTime 0.5 s is longer than endTime 0.3 s: the run cannot settle' $tmp/short.log"
+
 rbdPackBed -help > "$tmp/help.log" 2>&1
 check "-help lists -dict and -case" "grep -q -- '-dict' $tmp/help.log && grep -q -- '-case' $tmp/help.log"
 check "-help names the dictionary, the outputs and an example" \

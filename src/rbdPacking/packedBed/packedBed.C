@@ -170,6 +170,17 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         );
     }
 
+    // A quiet period longer than the run can never end it (a short run
+    // to endTime, to look at or to resume, is allowed: a warning)
+    if (controls_.settleTime > controls_.endTime)
+    {
+        WarningInFunction
+            << "simulation/settleTime " << controls_.settleTime
+            << " s is longer than endTime " << controls_.endTime << " s"
+            << (controls_.endTimeGiven ? "" : " (its default)")
+            << ": the run cannot settle and stops at endTime" << endl;
+    }
+
     // Rotation: spheres without friction never pick up spin
     rotates_ = getSwitchOrDefault(pelletsDict, "rotation", true);
     if
