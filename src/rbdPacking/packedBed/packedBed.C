@@ -73,6 +73,10 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     const dictionary& pelletsDict = dict.subDict("pellets");
     const pelletShape& shape = shape_();
 
+    // A pellet of a sensible size first (an STL in the wrong unit would
+    // otherwise be told of the tube it needs)
+    checkPelletSize(pelletsDict);
+
     // The tube must take a pellet in any orientation
     const scalar rb = shape.boundingRadius();
     if (tube_.radius() <= rb)
@@ -99,8 +103,6 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
           + "), and enough to hold the bed"
         );
     }
-
-    checkPelletSize(pelletsDict);
 
     checkControls();
 
@@ -647,7 +649,13 @@ void Foam::rbd::packedBed::checkCfdGrid(const dictionary& dict) const
                 << " per volume-equivalent diameter " << dpv << " m, "
                 << "a bed up to " << tube_.height() << " m high)" << nl
                 << "    allowed: at most " << maxBlockCells << " cells; "
-                << "lower cellsPerDiameter" << nl
+                << (
+                       tallest.cellsPerDiameter() > 2
+                     ? "lower cellsPerDiameter, or "
+                     : ""
+                   )
+                << "a smaller container/diameter or container/height"
+                << " (the grid spans the tube at its full height)" << nl
                 << exit(FatalIOError);
         }
     }

@@ -17,6 +17,9 @@ const Foam::wordList Foam::rbd::bedCaseSettings::contactTreatments
 });
 
 
+const Foam::scalar Foam::rbd::bedCaseSettings::maxReynoldsNumber = 1e4;
+
+
 const Foam::wordList Foam::rbd::bedCaseSettings::knownEntries
 ({
     "cellsPerDiameter",
@@ -240,7 +243,7 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
             0, 0.05*pelletDiameter, "m"
         )
     ),
-    nu_(getPositiveOrDefault(options, "nu", 1.5e-5, "m^2/s")),
+    nu_(getPositiveOrDefault(options, "nu", 1.5e-5, "m^2/s", 1)),
     velocity_(0),
     nIterations_(getLabelOrDefault(options, "nIterations", 2000, 1)),
     nProcessors_(getLabelOrDefault(options, "nProcessors", 2, 1)),
@@ -310,11 +313,23 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
                 "either U [m/s] or Re [-], not both"
             );
         }
+        const scalar uMax = maxReynoldsNumber*nu_/pelletDiameter_;
         velocity_ = getPositive(options, "U", "m/s");
+        if (velocity_ > uMax)
+        {
+            badEntry
+            (
+                options, "U", velocity_,
+                "a number in (0, " + Foam::name(uMax) + "] [m/s] (Re_p = U "
+                "dpv/nu at most " + Foam::name(maxReynoldsNumber)
+              + ": the case is steady and laminar)"
+            );
+        }
     }
     else
     {
-        const scalar Re = getPositiveOrDefault(options, "Re", 1, "-");
+        const scalar Re =
+            getPositiveOrDefault(options, "Re", 1, "-", maxReynoldsNumber);
         velocity_ = Re*nu_/pelletDiameter_;
     }
 }

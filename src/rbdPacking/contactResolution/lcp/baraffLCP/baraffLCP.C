@@ -158,10 +158,16 @@ namespace
 Foam::rbd::baraffLCP::baraffLCP(const dictionary& coeffs)
 :
     lcpSolver(),
-    tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-9, "-")),
+    tolerance_
+    (
+        getPositiveOrDefault(coeffs, "tolerance", 1e-9, "-", maxTolerance)
+    ),
     pivotTolerance_
     (
-        getPositiveOrDefault(coeffs, "pivotTolerance", 1e-10, "-")
+        getPositiveOrDefault
+        (
+            coeffs, "pivotTolerance", 1e-10, "-", maxTolerance
+        )
     ),
     maxPivotsPerContact_
     (

@@ -157,7 +157,10 @@ Foam::dictionary Foam::rbd::blockPivotingLCP::fallbackCoeffs()
 Foam::rbd::blockPivotingLCP::blockPivotingLCP(const dictionary& coeffs)
 :
     lcpSolver(),
-    tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-9, "-")),
+    tolerance_
+    (
+        getPositiveOrDefault(coeffs, "tolerance", 1e-9, "-", maxTolerance)
+    ),
     regularisation_
     (
         getInRangeOrDefault(coeffs, "regularisation", 1e-10, 1e-16, 1e-3, "-")

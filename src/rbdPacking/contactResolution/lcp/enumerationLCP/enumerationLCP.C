@@ -28,7 +28,10 @@ constexpr Foam::label Foam::rbd::enumerationLCP::maxContacts;
 Foam::rbd::enumerationLCP::enumerationLCP(const dictionary& coeffs)
 :
     lcpSolver(),
-    tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-9, "-"))
+    tolerance_
+    (
+        getPositiveOrDefault(coeffs, "tolerance", 1e-9, "-", maxTolerance)
+    )
 {
     checkKnownEntries(coeffs, {"tolerance"});
 }

@@ -27,7 +27,10 @@ Foam::rbd::projectedGaussSeidelLCP::projectedGaussSeidelLCP
 )
 :
     lcpSolver(),
-    tolerance_(getPositiveOrDefault(coeffs, "tolerance", 1e-6, "-")),
+    tolerance_
+    (
+        getPositiveOrDefault(coeffs, "tolerance", 1e-6, "-", maxTolerance)
+    ),
     maxIterations_(getLabelOrDefault(coeffs, "maxIterations", 1000, 1)),
     relaxation_(coeffs.getOrDefault<scalar>("relaxation", 1)),
     warmStart_(getSwitchOrDefault(coeffs, "warmStart", false))
