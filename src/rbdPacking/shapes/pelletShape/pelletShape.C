@@ -91,6 +91,14 @@ void Foam::rbd::pelletShape::write(Ostream& os) const
 {
     os.writeEntry("shape", type());
     os.writeEntry("faces", faces_);
+
+    // The mesh has about faces_ triangles (a cylinder needs at least its
+    // caps' fans and side strips): say what it has when that differs
+    const label n = mesh().nFaces();
+    if (n != faces_)
+    {
+        os  << indent << "// meshed with " << n << " triangles" << nl;
+    }
 }
 
 
