@@ -149,20 +149,86 @@ void Foam::rbd::cylinderContacts::cylinderTube
                 tube::axialDistance(c) > VSMALL
               ? vector(c.x(), c.y(), 0) : vector(1, 0, 0)
             );
-            vector w(normalTo(er, ax));
-            for (label iter = 0; iter < 50; ++iter)
+            // The fixed point from a start direction: a local maximum of
+            // rho over the rim
+            auto outward = [&](vector w)
             {
-                const point p(c + a*w);
-                if (tube::axialDistance(p) < VSMALL)
+                for (label iter = 0; iter < 50; ++iter)
                 {
-                    break;
+                    const point p(c + a*w);
+                    if (tube::axialDistance(p) < VSMALL)
+                    {
+                        break;
+                    }
+                    const vector wNew
+                    (
+                        normalTo(vector(p.x(), p.y(), 0), ax)
+                    );
+                    const scalar change = magSqr(wNew - w);
+                    w = wNew;
+                    if (change < 1e-20)
+                    {
+                        break;
+                    }
                 }
-                const vector wNew(normalTo(vector(p.x(), p.y(), 0), ax));
-                const scalar change = magSqr(wNew - w);
-                w = wNew;
-                if (change < 1e-20)
+                return w;
+            };
+            auto rimRho = [&](const vector& d)
+            {
+                const label nq = rimPoints(c, d, q);
+                scalar rho = 0;
+                for (label k = 0; k < nq; ++k)
                 {
-                    break;
+                    rho = max(rho, tube::axialDistance(q[k]));
+                }
+                return rho;
+            };
+            vector w(outward(normalTo(er, ax)));
+
+            // rho can have two maxima over a tilted rim near the axis (a
+            // disc leaning across a narrow tube): the one found from e_r of
+            // the centre may be the lower (a disc went 7 % of its diameter
+            // through the wall). The global one: every vertex of a
+            // polygonal rim, or the fixed points from four starts on a
+            // circle; taken only where it is higher, so that every other
+            // contact stays as it was
+            {
+                const scalar rhoFound = rimRho(w);
+                vector wBest(w);
+                scalar rhoBest = rhoFound;
+                if (nRim >= 3)
+                {
+                    for (const scalar t : rimAngles)
+                    {
+                        const vector d
+                        (
+                            R & vector(Foam::cos(t), Foam::sin(t), 0)
+                        );
+                        const scalar rho = tube::axialDistance(c + a*d);
+                        if (rho > rhoBest)
+                        {
+                            rhoBest = rho;
+                            wBest = d;
+                        }
+                    }
+                }
+                else
+                {
+                    const vector w0(normalTo(er, ax));
+                    for (const vector& d0 : {-w0, ax ^ w0, w0 ^ ax})
+                    {
+                        const vector d(outward(d0));
+                        const scalar rho = rimRho(d);
+                        if (rho > rhoBest)
+                        {
+                            rhoBest = rho;
+                            wBest = d;
+                        }
+                    }
+                }
+                if (rhoBest > rhoFound + 1e-12*Rt)
+                {
+                    w = wBest;
                 }
             }
             const vector u(ax ^ w);

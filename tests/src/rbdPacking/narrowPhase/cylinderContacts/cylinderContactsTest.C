@@ -262,3 +262,79 @@ TEST(cylinderContacts, polygonalRimsGiveTheMeshsDeepestVertices)
         }
     }
 }
+
+
+TEST(cylinderContacts, tiltedDiscNearTheAxisFindsTheOutermostRimPoint)
+{
+    // A disc (d 10 mm, h 2 mm) leaning across a tube of 15 mm: rho has two
+    // maxima over each rim, and the one in the direction of the centre may
+    // be the lower (a disc went 7 % of d through the wall). Random poses
+    // near the axis; the contacts' smallest wall gap is the rim's (circle:
+    // brute force over 20000 angles; polygon: the mesh's outermost vertex)
+    const scalar bDisc = 0.001;
+    const scalar Rt = 0.0075;
+    const tube container(2*Rt, 1, 0.6, 0.6);
+    const triMesh m(pelletMeshes::cylinder(d, 2*bDisc, 300));
+    const List<scalar> angles(cylinderContacts::rimAngles(m.points(), a));
+
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> U(-1, 1);
+    label found = 0;
+    for (label trial = 0; trial < 200; ++trial)
+    {
+        const vector axis(U(rng), U(rng), U(rng));
+        const quaternion q(axis/mag(axis), M_PI*U(rng));
+        const point x(0.002*U(rng), 0.002*U(rng), 0.05);
+        const rigidBody bd(body(x, q));
+        const vector ax(bd.R() & vector(0, 0, 1));
+        const vector u(bd.R() & vector(1, 0, 0));
+        const vector v(bd.R() & vector(0, 1, 0));
+
+        scalar circleGap = GREAT;
+        for (const scalar side : {-1.0, 1.0})
+        {
+            for (label j = 0; j < 20000; ++j)
+            {
+                const scalar t = 2*M_PI*j/20000;
+                const point p
+                (
+                    x + side*bDisc*ax + a*(Foam::cos(t)*u + Foam::sin(t)*v)
+                );
+                circleGap = min(circleGap, Rt - tube::axialDistance(p));
+            }
+        }
+        scalar meshGap = GREAT;
+        const tmp<pointField> tp = m.transformedPoints(tensor(q.R()), x);
+        for (const point& p : tp())
+        {
+            meshGap = min(meshGap, Rt - tube::axialDistance(p));
+        }
+
+        const scalar wide = 0.01;   // every rim point is within the band
+        DynamicList<contact> circle, polygon;
+        cylinderContacts::cylinderTube
+        (
+            0, bd, a, bDisc, container, wide, circle
+        );
+        cylinderContacts::cylinderTube
+        (
+            0, bd, a, bDisc, container, wide, polygon, angles
+        );
+        auto wallGap = [](const UList<contact>& cs)
+        {
+            scalar g = GREAT;
+            for (const contact& c : cs)
+            {
+                if (c.k == tubeWall)
+                {
+                    g = min(g, c.gap);
+                }
+            }
+            return g;
+        };
+        EXPECT_NEAR(wallGap(circle), circleGap, 1e-9) << "trial " << trial;
+        EXPECT_NEAR(wallGap(polygon), meshGap, 1e-12) << "trial " << trial;
+        found += wallGap(circle) < GREAT;
+    }
+    EXPECT_EQ(found, 200);
+}
