@@ -1102,6 +1102,27 @@ void Foam::rbd::packedBed::run()
             << "Not settled by endTime " << ctrl.endTime << " s (kinetic "
             << "energy " << w.kineticEnergy() << " J)" << endl;
     }
+
+    // The tube is open at the top: a pellet thrown out (restitution 1
+    // and no friction pass energy up a column) is not lost, but the bed
+    // and the CFD case then reach above the container
+    {
+        const scalar rb = shape_->boundingRadius();
+        label above = 0;
+        for (const rigidBody& b : w.bodies())
+        {
+            above += (b.x().z() - rb > tube_.height());
+        }
+        if (above)
+        {
+            WarningInFunction
+                << above << " pellet(s) end wholly above the top of the "
+                << "container (height " << tube_.height() << " m; the "
+                << "highest at z = " << bedHeight() << " m): the bed and "
+                << "the CFD case reach above it" << endl;
+        }
+    }
+
     const world::statistics& s = w.stats();
     Info<< "Simulated " << w.time() << " s in " << s.steps << " steps ("
         << "smallest " << s.minStep << " s), " << s.collisions
