@@ -117,9 +117,22 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     const scalar loosest = loosestPorosity;
     const scalar R = tube_.radius();
     const scalar N = tube_.diameter()/shape.volumeEquivalentDiameter();
+    // In a tube barely wider than a pellet the bed is a single file: one
+    // pellet per volume-equivalent diameter of height, porosity
+    // 1 - (2/3)/N^2 (the correlation, far outside its range there, gave
+    // 0.95 and a 30-sphere column of 0.3 m was estimated at 3.6 m)
+    const scalar singleFile = 1 - (2.0/3.0)/sqr(N);
     const scalar epsEstimate = min
     (
-        max(correlations::benyahiaONeill(N, shape.sphericity()), densest),
+        max
+        (
+            min
+            (
+                correlations::benyahiaONeill(N, shape.sphericity()),
+                singleFile
+            ),
+            densest
+        ),
         loosest
     );
     const bool hasNumber = pelletsDict.found("number");
