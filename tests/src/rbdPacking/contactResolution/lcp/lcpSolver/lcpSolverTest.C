@@ -74,7 +74,7 @@ TEST(lcpSolverDeath, rejectsBadCoefficient)
             parse("lcpSolver baraff; baraffCoeffs { tolerance -1; }")
         ),
         ::testing::ExitedWithCode(1),
-        "Bad entry 'tolerance -1;'(.|\n)*allowed: a number > 0"
+        "Bad entry 'tolerance -1;'(.|\n)*allowed: a number in \\(0, 0.01\\]"
     );
     EXPECT_EXIT
     (
