@@ -78,6 +78,13 @@ rbdPackBed -case "$tmp/short" > "$tmp/short.log" 2>&1
 check "endTime below settleTime: exit 0 and a warning" \
     "[ \$? -eq 0 ] && grep -q 'settleTime 0.5 s is longer than endTime 0.3 s: the run cannot settle' $tmp/short.log"
 
+# An entry of a block written at the top level: read by no one, said so
+cp -r "$here/cases/smallSpheres" "$tmp/top"
+sed -i '0,/^container/s//endTime 0.1;\ncontainer/' "$tmp/top/system/packingDict"
+rbdPackBed -case "$tmp/top" > "$tmp/top.log" 2>&1
+check "endTime at the top level: a warning naming simulation" \
+    "grep -q \"'endTime' at the top level of .* is not read: it is an entry of simulation\" $tmp/top.log"
+
 rbdPackBed -help > "$tmp/help.log" 2>&1
 check "-help lists -dict and -case" "grep -q -- '-dict' $tmp/help.log && grep -q -- '-case' $tmp/help.log"
 check "-help names the dictionary, the outputs and an example" \

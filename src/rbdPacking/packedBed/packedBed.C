@@ -32,6 +32,11 @@ const Foam::scalar Foam::rbd::packedBed::densestPorosity = 0.26;
 
 const Foam::scalar Foam::rbd::packedBed::loosestPorosity = 0.95;
 
+const Foam::wordList Foam::rbd::packedBed::analysisEntries
+({
+    "porosityHeight", "radialBins", "axialBins"
+});
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -208,10 +213,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
 
     // Analysis
     const dictionary analysisDict(subDictOrEmpty(dict, "analysis"));
-    checkKnownEntries
-    (
-        analysisDict, {"porosityHeight", "radialBins", "axialBins"}
-    );
+    checkKnownEntries(analysisDict, analysisEntries);
     if (analysisDict.found("porosityHeight"))
     {
         // The bed lies in the tube
@@ -451,6 +453,38 @@ const Foam::dictionary& Foam::rbd::packedBed::checkBlocks
                     FatalIOError<< ' ' << b;
                 }
                 FatalIOError<< exit(FatalIOError);
+            }
+        }
+    }
+
+    // A plain entry at the top level that belongs in a block (endTime 5;
+    // outside simulation { }) is read by no one: say so. (Names that are
+    // also natural macro variables, diameter or height, are not listed.)
+    for (const entry& e : dict)
+    {
+        if (e.isDict())
+        {
+            continue;
+        }
+        for
+        (
+            const auto& block
+          : {
+                std::make_pair("simulation", &simulationControls::knownEntries),
+                std::make_pair("loading", &loadingScheme::knownEntries),
+                std::make_pair("analysis", &analysisEntries),
+                std::make_pair("cfdCase", &bedCaseSettings::knownEntries)
+            }
+        )
+        {
+            if (block.second->found(e.keyword()))
+            {
+                WarningInFunction
+                    << "'" << e.keyword() << "' at the top level of "
+                    << dict.name() << " is not read: it is an entry of "
+                    << block.first << " { } (as the variable of a $macro,"
+                    << " ignore this)" << endl;
+                break;
             }
         }
     }

@@ -19,6 +19,13 @@ const Foam::wordList Foam::rbd::loadingScheme::schemes
 });
 
 
+const Foam::wordList Foam::rbd::loadingScheme::knownEntries
+({
+    "scheme", "spacing", "tilt", "positionDisturbance",
+    "angleDisturbance", "seed", "releaseHeight", "columnOffset"
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::loadingScheme::loadingScheme
@@ -48,14 +55,7 @@ Foam::rbd::loadingScheme::loadingScheme
     R_(container.radius()),
     rng_(seed_)
 {
-    checkKnownEntries
-    (
-        dict,
-        {
-            "scheme", "spacing", "tilt", "positionDisturbance",
-            "angleDisturbance", "seed", "releaseHeight", "columnOffset"
-        }
-    );
+    checkKnownEntries(dict, knownEntries);
 
     if (spacing_ < 1)
     {

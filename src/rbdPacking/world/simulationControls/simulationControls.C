@@ -21,6 +21,18 @@ const Foam::wordList Foam::rbd::simulationControls::restingFrictions
 });
 
 
+const Foam::wordList Foam::rbd::simulationControls::knownEntries
+({
+    "deltaT", "endTime", "gravity", "restingVelocity",
+    "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
+    "restitutionSweeps", "maxSweeps", "collisionTolerance",
+    "sleepVelocity", "sleepTime", "wakeVelocity",
+    "settleTime", "settleEnergy", "logInterval", "checkpointInterval",
+    "lcpSolver", "restingCompliance", "contactModel", "restingFriction",
+    "preset"
+});
+
+
 const Foam::wordList Foam::rbd::simulationControls::presets
 ({
     "fast", "default", "accurate"
@@ -161,17 +173,7 @@ Foam::rbd::simulationControls::simulationControls
     preset(d.getOrDefault<word>("preset", "default")),
     dict(d)
 {
-    wordList known
-    {
-        "deltaT", "endTime", "gravity", "restingVelocity",
-        "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
-        "restitutionSweeps", "maxSweeps", "collisionTolerance",
-        "sleepVelocity", "sleepTime", "wakeVelocity",
-        "settleTime", "settleEnergy", "logInterval", "checkpointInterval",
-        "lcpSolver",
-        "restingCompliance",
-        "contactModel", "restingFriction", "preset"
-    };
+    wordList known(knownEntries);
     // <name>Coeffs of every LCP solver there is
     known.append(lcpSolver::coeffsNames());
     checkKnownEntries(given, known);
