@@ -221,6 +221,17 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         (
             analysisDict, "porosityHeight", "m", tube_.height()
         );
+        // Below a couple of pellets the section holds the floor's layer
+        // only (1e-9 m gave a bulk porosity of 1)
+        const scalar dpv = shape.volumeEquivalentDiameter();
+        if (porosityHeight_ < 2*dpv)
+        {
+            WarningInFunction
+                << "analysis/porosityHeight " << porosityHeight_ << " m is "
+                << "below two volume-equivalent diameters (" << 2*dpv
+                << " m): bulkPorosity is then that of the floor's layer,"
+                << " not of the bed" << endl;
+        }
     }
     radialBins_ =
         getLabelOrDefault(analysisDict, "radialBins", 100, 1, 100000);
