@@ -197,14 +197,7 @@ bool Foam::rbd::getSwitchOrDefault
         badEntry(dict, key, "{ ... }", allowed);
     }
 
-    ITstream& is = e->stream();
-    is.rewind();
-    OStringStream given;
-    for (const token& t : is)
-    {
-        given << (given.str().empty() ? "" : " ") << t;
-    }
-
+    const ITstream& is = e->stream();
     if (is.size() == 1)
     {
         const token& t = is[0];
@@ -220,6 +213,12 @@ bool Foam::rbd::getSwitchOrDefault
         {
             return t.labelToken() == 1;
         }
+    }
+
+    OStringStream given;
+    for (const token& t : is)
+    {
+        given << (given.str().empty() ? "" : " ") << t;
     }
     badEntry(dict, key, given.str().c_str(), allowed);
 }

@@ -773,17 +773,7 @@ void Foam::rbd::packedBed::checkOutputDirectories() const
             ::realpath(a.c_str(), ra) && ::realpath(b.c_str(), rb)
          && std::string(ra) == std::string(rb);
     };
-    const dictionary& pellets = packingDict_.subDict("pellets");
-    fileName stl;
-    if (pellets.getOrDefault<word>("shape", "") == "stl")
-    {
-        stl = pellets.get<fileName>("file");
-        stl.expand();
-        if (!stl.isAbsolute())
-        {
-            stl = root/stl;
-        }
-    }
+    const fileName pelletFile(shape_->inputFile());
     for (const fileName& f : files)
     {
         if (sameFile(dictName_, root/f))
@@ -794,8 +784,9 @@ void Foam::rbd::packedBed::checkOutputDirectories() const
                 << "    Give -dict a dictionary of its own" << nl
                 << exit(FatalError);
         }
-        if (!stl.empty() && sameFile(stl, root/f))
+        if (!pelletFile.empty() && sameFile(pelletFile, root/f))
         {
+            const dictionary& pellets = packingDict_.subDict("pellets");
             badEntry
             (
                 pellets, "file", pellets.get<fileName>("file"),

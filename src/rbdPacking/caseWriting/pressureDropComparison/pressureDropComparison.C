@@ -186,11 +186,11 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
     nu_ = dimensionedScalar("nu", dimArea/dimTime, transport).value();
     if (!(nu_ > 0 && nu_ <= 1))
     {
-        FatalIOErrorInFunction(transport)
-            << "Bad entry 'nu " << nu_ << "' in "
-            << caseDir_/"constant/transportProperties" << nl
-            << "    allowed: a kinematic viscosity in (0, 1] [m^2/s]"
-            << exit(FatalIOError);
+        badEntry
+        (
+            transport, "nu", nu_,
+            "a kinematic viscosity in (0, 1] [m^2/s]"
+        );
     }
     if (transport.found("rho"))
     {

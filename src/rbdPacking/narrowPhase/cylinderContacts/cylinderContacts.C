@@ -183,7 +183,8 @@ void Foam::rbd::cylinderContacts::cylinderTube
                 }
                 return rho;
             };
-            vector w(outward(normalTo(er, ax)));
+            const vector w0(normalTo(er, ax));
+            vector w(outward(w0));
 
             // rho can have two maxima over a tilted rim near the axis (a
             // disc leaning across a narrow tube): the one found from e_r of
@@ -214,7 +215,6 @@ void Foam::rbd::cylinderContacts::cylinderTube
                 }
                 else
                 {
-                    const vector w0(normalTo(er, ax));
                     for (const vector& d0 : {-w0, ax ^ w0, w0 ^ ax})
                     {
                         const vector d(outward(d0));

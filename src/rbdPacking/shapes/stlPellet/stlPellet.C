@@ -27,6 +27,7 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
 :
     pelletShape(dict, 0),
     file_(dict.get<fileName>("file")),
+    path_(file_),
     scale_(getPositiveOrDefault(dict, "scale", 1, "-")),
     surface_(),
     volume_(0),
@@ -41,21 +42,20 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
     }
 
     // Relative paths are relative to the case directory
-    fileName path(file_);
-    path.expand();
-    if (!path.isAbsolute() && !getEnv("FOAM_CASE").empty())
+    path_.expand();
+    if (!path_.isAbsolute() && !getEnv("FOAM_CASE").empty())
     {
-        path = fileName(getEnv("FOAM_CASE"))/path;
+        path_ = fileName(getEnv("FOAM_CASE"))/path_;
     }
 
     triMesh surface;
     string reason;
-    if (!readSTL(path, scale_, surface, reason))
+    if (!readSTL(path_, scale_, surface, reason))
     {
         badEntry
         (
             dict, "file", file_,
-            "a closed, outward-oriented STL surface (" + path + ": "
+            "a closed, outward-oriented STL surface (" + path_ + ": "
           + reason + ")"
         );
     }
@@ -66,7 +66,7 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
         (
             dict, "file", file_,
             "an STL of at most " + Foam::name(maxFaces) + " triangles ("
-          + path + " has " + Foam::name(surface.nFaces())
+          + path_ + " has " + Foam::name(surface.nFaces())
           + "; coarsen it)"
         );
     }

@@ -580,25 +580,13 @@ void Foam::rbd::world::updateSleep(const scalar h)
     const scalar drift = vSleep*controls_.sleepTime;
 
     // Who rests on whom: a contact whose normal, from the other pellet
-    // towards this one, points up. Only a pellet with such a support, or
-    // touching the container, may sleep: one still in the air (a slow
-    // fall at a small gravity, a large sleepVelocity) stays awake
+    // towards this one, points up
     std::vector<std::pair<label, label>> restsOn;
-    boolList supported(bodies_.size(), false);
     for (const contact& c : contacts_)
     {
         if (c.k < 0)
         {
-            supported[c.i] = true;
             continue;
-        }
-        if (c.n.z() > 0)
-        {
-            supported[c.i] = true;
-        }
-        else if (c.n.z() < 0)
-        {
-            supported[c.k] = true;
         }
         if (c.n.z() > 0 && !fixed_[c.k])
         {
@@ -648,12 +636,34 @@ void Foam::rbd::world::updateSleep(const scalar h)
     bool anyStill = false;
     for (const label i : awake())
     {
-        sleeps[i] = slowTime_[i] >= controls_.sleepTime && supported[i];
+        sleeps[i] = slowTime_[i] >= controls_.sleepTime;
         anyStill = anyStill || sleeps[i];
     }
     if (!anyStill)
     {
         return;
+    }
+
+    // Only a pellet resting on another or touching the container may
+    // sleep: one still in the air (a slow fall at a small gravity, a large
+    // sleepVelocity) stays awake
+    {
+        boolList supported(bodies_.size(), false);
+        for (const contact& c : contacts_)
+        {
+            if (c.k < 0 || c.n.z() > 0)
+            {
+                supported[c.i] = true;
+            }
+            else if (c.n.z() < 0)
+            {
+                supported[c.k] = true;
+            }
+        }
+        for (const label i : awake())
+        {
+            sleeps[i] = sleeps[i] && supported[i];
+        }
     }
     for (bool removed = true; removed; )
     {
