@@ -3,6 +3,10 @@
 # Bad input to rbdPackBed: one case of badInput.cases (argument: its name).
 # Asserts: non-zero exit, the expected error text, the file named, no crash or
 # stack trace, and nothing written into the case.
+#
+# The expected text is a Perl regex (grep -P) matched against the whole log
+# at once (-z): '.' stops at a line end, so 'a.*b' needs a and b on one
+# line; a pattern that spans lines says so with '(.|\n)*'.
 #------------------------------------------------------------------------------
 set -u
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -130,7 +134,7 @@ if [ $status -eq 0 ]
 then
     echo "FAIL: exit status 0"; fail=1
 fi
-if ! grep -Ezq -- "$expect" "$tmp/log"
+if ! grep -Pzq -- "$expect" "$tmp/log"
 then
     echo "FAIL: log does not match: $expect"; fail=1
 fi
