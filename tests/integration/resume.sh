@@ -25,28 +25,33 @@ resumeCase()
     local end
     end="$(foamDictionary -entry simulation/endTime -value "$full/system/packingDict" 2>/dev/null)"
 
+    local rc
     rbdPackBed -case "$full" > "$full.log" 2>&1
-    check "$name: the full run settles" \
-        "[ \"\$(foamDictionary -entry settled -value $full/$out/summary 2>/dev/null)\" = true ]"
-    check "$name: a settled run leaves no checkpoint" "[ ! -e $full/$out/checkpoint ]"
+    rc=$?
+    check "$name: the full run exits 0 and settles" \
+        "[ $rc -eq 0 ] && [ \"\$(foamDictionary -entry settled -value $full/$out/summary 2>/dev/null)\" = true ]"
+    check "$name: a settled run writes its packing and leaves no checkpoint" \
+        "[ $rc -eq 0 ] && [ -s $full/$out/pellets.csv ] && [ ! -e $full/$out/checkpoint ]"
 
     foamDictionary "$split/system/packingDict" -entry simulation/endTime -set "$stop" >/dev/null
     rbdPackBed -case "$split" > "$split.1.log" 2>&1
-    check "$name: stopped at endTime $stop: exit 0, not settled" \
-        "[ \$? -eq 0 ] && grep -q 'Not settled by endTime' $split.1.log"
+    rc=$?
+    check "$name: stopped at endTime $stop: exit $unsettledStatus, not settled" \
+        "[ $rc -eq $unsettledStatus ] && grep -q 'Not settled by endTime' $split.1.log"
     check "$name: ... and a checkpoint written" \
         "[ -s $split/$out/checkpoint ] && grep -q 'Checkpoint at t = $stoppedAt s' $split.1.log"
 
     foamDictionary "$split/system/packingDict" -entry simulation/endTime -set "$end" >/dev/null
     rbdPackBed -case "$split" -resume > "$split.2.log" 2>&1
+    rc=$?
     check "$name: -resume runs and says from where" \
-        "[ \$? -eq 0 ] && grep -q 'Resuming from $out/checkpoint at t = $stoppedAt s' $split.2.log"
+        "[ $rc -eq 0 ] && grep -q 'Resuming from $out/checkpoint at t = $stoppedAt s' $split.2.log"
     check "$name: resumed packing = uninterrupted packing, bit for bit" \
-        "cmp -s $full/$out/pellets.csv $split/$out/pellets.csv"
+        "[ -s $full/$out/pellets.csv ] && cmp -s $full/$out/pellets.csv $split/$out/pellets.csv"
     for key in steps simulatedTime collisions maxOverlap bulkPorosity
     do
         check "$name: same $key" \
-            "[ \"\$(foamDictionary -entry $key -value $full/$out/summary 2>/dev/null)\" = \"\$(foamDictionary -entry $key -value $split/$out/summary 2>/dev/null)\" ]"
+            "v=\$(foamDictionary -entry $key -value $full/$out/summary 2>/dev/null) && [ -n \"\$v\" ] && [ \"\$v\" = \"\$(foamDictionary -entry $key -value $split/$out/summary 2>/dev/null)\" ]"
     done
     # The packing time counts the first run's up to its checkpoint
     local w1 w2 c2
@@ -56,7 +61,7 @@ resumeCase()
     check "$name: wall time of both runs adds up (${w1:-?} s before the resume, $w2 s in all; CPU $c2 s)" \
         "awk -v a=${w1:-0} -v b=$w2 -v c=$c2 'BEGIN {exit !(a > 0 && b > a && c > 0)}'"
     check "$name: the settled resumed run removed its checkpoint" \
-        "[ ! -e $split/$out/checkpoint ] && grep -q 'Removed $out/checkpoint' $split.2.log"
+        "[ $rc -eq 0 ] && [ -s $split/$out/pellets.csv ] && [ ! -e $split/$out/checkpoint ] && grep -q 'Removed $out/checkpoint' $split.2.log"
 }
 
 # Spheres (exact contacts)
@@ -87,8 +92,9 @@ cp -r "$here/cases/smallSpheres" "$tmp/often"
 foamDictionary "$tmp/often/system/packingDict" -entry simulation/checkpointInterval -set 1e-6 >/dev/null
 foamDictionary "$tmp/often/system/packingDict" -entry simulation/endTime -set 0.5 >/dev/null
 rbdPackBed -case "$tmp/often" > "$tmp/often.log" 2>&1
-check "checkpointInterval 1e-6: a checkpoint at every outer interval" \
-    "[ \$(grep -c 'Checkpoint at t = ' $tmp/often.log) -ge 15 ] && [ -s $tmp/often/$out/checkpoint ] && [ ! -e $tmp/often/$out/checkpoint.tmp ]"
+rc=$?
+check "checkpointInterval 1e-6: exit $unsettledStatus (not settled), a checkpoint at every outer interval" \
+    "[ $rc -eq $unsettledStatus ] && [ \$(grep -c 'Checkpoint at t = ' $tmp/often.log) -ge 15 ] && [ -s $tmp/often/$out/checkpoint ] && [ ! -e $tmp/often/$out/checkpoint.tmp ]"
 check "checkpointInterval is echoed" "grep -q 'checkpointInterval *1e-06' $tmp/often.log"
 
 # checkpointInterval 0: none, not even at endTime
@@ -96,7 +102,11 @@ cp -r "$here/cases/smallSpheres" "$tmp/never"
 foamDictionary "$tmp/never/system/packingDict" -entry simulation/checkpointInterval -set 0 >/dev/null
 foamDictionary "$tmp/never/system/packingDict" -entry simulation/endTime -set 0.5 >/dev/null
 rbdPackBed -case "$tmp/never" > "$tmp/never.log" 2>&1
-check "checkpointInterval 0: no checkpoint" "[ ! -e $tmp/never/$out/checkpoint ]"
+rc=$?
+check "checkpointInterval 0: the run ends at endTime as the others do (exit $unsettledStatus, pellets.csv)" \
+    "[ $rc -eq $unsettledStatus ] && grep -q 'Not settled by endTime' $tmp/never.log && [ -s $tmp/never/$out/pellets.csv ]"
+check "checkpointInterval 0: ... and writes no checkpoint, nor says so" \
+    "[ $rc -eq $unsettledStatus ] && [ ! -e $tmp/never/$out/checkpoint ] && ! grep -q 'Checkpoint at t = ' $tmp/never.log"
 
 # Refusals: nonzero exit, the reason, no output
 refused()
@@ -132,8 +142,9 @@ cp -r "$tmp/often" "$tmp/endTimeChanged"
 foamDictionary "$tmp/endTimeChanged/system/packingDict" -entry simulation/endTime -set 0.7 >/dev/null
 foamDictionary "$tmp/endTimeChanged/system/packingDict" -entry cfdCase/cellsPerDiameter -set 10 >/dev/null
 rbdPackBed -case "$tmp/endTimeChanged" -resume > "$tmp/endTimeChanged.log" 2>&1
+rc=$?
 check "endTime and cfdCase may change: resumed to the new endTime" \
-    "[ \$? -eq 0 ] && grep -q 'Simulated 0.7 s' $tmp/endTimeChanged.log"
+    "[ $rc -eq $unsettledStatus ] && [ -s $tmp/endTimeChanged/$out/pellets.csv ] && grep -q 'Simulated 0.7 s' $tmp/endTimeChanged.log"
 
 cp -r "$tmp/often" "$tmp/endTimeBefore"
 foamDictionary "$tmp/endTimeBefore/system/packingDict" -entry simulation/endTime -set 0.3 >/dev/null
@@ -162,7 +173,8 @@ refused "damaged size field" "$tmp/hugeSize" "holds a list of 2147483647 entries
 cp -r "$tmp/often" "$tmp/stale"
 foamDictionary "$tmp/stale/system/packingDict" -entry simulation/checkpointInterval -set 0 >/dev/null
 rbdPackBed -case "$tmp/stale" > "$tmp/stale.log" 2>&1
+rc=$?
 check "a fresh run removes an earlier run's checkpoint" \
-    "[ ! -e $tmp/stale/$out/checkpoint ] && grep -q 'of an earlier run' $tmp/stale.log"
+    "[ $rc -eq $unsettledStatus ] && [ -s $tmp/stale/$out/pellets.csv ] && [ ! -e $tmp/stale/$out/checkpoint ] && grep -q 'of an earlier run' $tmp/stale.log"
 
 exit $fail
