@@ -15,6 +15,7 @@
 #include <unistd.h>
 #include <climits>
 #include <cstdlib>
+#include <csignal>
 
 using Foam::constant::mathematical::pi;
 
@@ -31,6 +32,69 @@ const Foam::scalar Foam::rbd::packedBed::maxBlockCells = 5e7;
 const Foam::scalar Foam::rbd::packedBed::densestPorosity = 0.26;
 
 const Foam::scalar Foam::rbd::packedBed::loosestPorosity = 0.95;
+
+const Foam::scalar Foam::rbd::packedBed::stackedHeightFactor = 2;
+
+const Foam::scalar Foam::rbd::packedBed::plausiblePelletSize[2] =
+    {2e-4, 0.1};
+
+const Foam::scalar Foam::rbd::packedBed::plausibleTubeDiameter[2] =
+    {2e-3, 5};
+
+const Foam::Enum<Foam::rbd::packedBed::runStatus>
+Foam::rbd::packedBed::runStatusNames
+({
+    {runStatus::settled, "settled"},
+    {runStatus::notSettled, "notSettled"},
+    {runStatus::incomplete, "incomplete"},
+    {runStatus::stacked, "stacked"},
+    {runStatus::interrupted, "interrupted"}
+});
+
+
+namespace
+{
+    //- The signal (SIGINT, SIGTERM) that asked the run to stop, 0: none.
+    //  The handler only sets it; the run stops at the end of the outer
+    //  interval it is in, where a checkpoint holds the state bit for bit
+    volatile std::sig_atomic_t stopSignal = 0;
+
+    extern "C" void requestStop(int sig)
+    {
+        stopSignal = sig;
+    }
+
+    //- SIGINT and SIGTERM ask the run to stop while it is in scope; the
+    //  handlers before it are restored on leaving. SA_RESETHAND: a second
+    //  Ctrl-C stops the process at once
+    class stopRequests
+    {
+        struct sigaction oldInt_, oldTerm_;
+
+    public:
+
+        stopRequests()
+        {
+            stopSignal = 0;
+            struct sigaction sa;
+            sa.sa_handler = requestStop;
+            sigemptyset(&sa.sa_mask);
+            sa.sa_flags = SA_RESETHAND;
+            ::sigaction(SIGINT, &sa, &oldInt_);
+            ::sigaction(SIGTERM, &sa, &oldTerm_);
+        }
+
+        ~stopRequests()
+        {
+            ::sigaction(SIGINT, &oldInt_, nullptr);
+            ::sigaction(SIGTERM, &oldTerm_, nullptr);
+        }
+
+        stopRequests(const stopRequests&) = delete;
+        void operator=(const stopRequests&) = delete;
+    };
+}
+
 
 const Foam::wordList Foam::rbd::packedBed::analysisEntries
 ({
@@ -72,7 +136,10 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     settled_(false),
     wallTime_(0),
     cpuTime_(0),
-    finalOverlap_(0)
+    finalOverlap_(0),
+    epsEstimate_(0),
+    status_(runStatus::notSettled),
+    acceptStatus_(false)
 {
     const dictionary& containerDict = dict.subDict("container");
     const dictionary& pelletsDict = dict.subDict("pellets");
@@ -84,14 +151,41 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
 
     // The tube must take a pellet in any orientation
     const scalar rb = shape.boundingRadius();
+    const bool pelletLooksMm = 2*rb > plausiblePelletSize[1];
+    const bool tubeLooksMm = tube_.diameter() > plausibleTubeDiameter[1];
+    if (tubeLooksMm)
+    {
+        WarningInFunction
+            << "container/diameter " << tube_.diameter() << " m in "
+            << containerDict.name() << " is wider than a packed-bed tube ("
+            << plausibleTubeDiameter[0] << " to " << plausibleTubeDiameter[1]
+            << " m): lengths in packingDict are in metres; if it is in "
+            << "millimetres, give " << tube_.diameter()/1000 << endl;
+    }
     if (tube_.radius() <= rb)
     {
+        // Both entries and their values, and the unit when one of them
+        // looks like millimetres
+        string hint;
+        if (pelletLooksMm && !tubeLooksMm)
+        {
+            hint =
+                "; lengths are in metres: a pellet of "
+              + Foam::name(2*rb) + " m looks like millimetres (give "
+              + (
+                    shape.inputFile().empty()
+                  ? "pellets/diameter in m"
+                  : "pellets/scale 0.001 for an STL in mm"
+                )
+              + ")";
+        }
         badEntry
         (
             containerDict, "diameter", tube_.diameter(),
             "a diameter above the pellets' bounding diameter "
-          + Foam::name(2*rb) + " [m] (pellet shape " + shape.type()
-          + ", diameter " + Foam::name(shape.diameter()) + ")"
+          + Foam::name(2*rb) + " [m] (pellets/shape " + shape.type()
+          + ", pellets/diameter " + Foam::name(shape.diameter()) + " m)"
+          + hint
         );
     }
 
@@ -140,6 +234,7 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         ),
         loosest
     );
+    epsEstimate_ = epsEstimate;
     const bool hasNumber = pelletsDict.found("number");
     const bool hasFill = pelletsDict.found("fillHeight");
     if (hasNumber == hasFill)
@@ -553,6 +648,31 @@ void Foam::rbd::packedBed::checkPelletSize
             << " to " << maxPelletSize << " m" << nl
             << exit(FatalIOError);
     }
+    // A size outside the range of catalyst pellets is most often a
+    // dictionary (or an STL) in millimetres: it packs, but 3 m spheres of
+    // 113 t, for tens of seconds of simulated time
+    if (2*rb < plausiblePelletSize[0] || 2*rb > plausiblePelletSize[1])
+    {
+        string hint;
+        if (2*rb > plausiblePelletSize[1])
+        {
+            hint =
+                shape.inputFile().empty()
+              ? ": if pellets/diameter " + Foam::name(shape.diameter())
+              + " is in millimetres, give "
+              + Foam::name(shape.diameter()/1000)
+              : ": if the STL " + shape.inputFile().name()
+              + " is in millimetres, give pellets/scale 0.001";
+        }
+        WarningInFunction
+            << "Pellets of shape " << shape.type() << " in "
+            << pelletsDict.name() << " have a bounding diameter of " << 2*rb
+            << " m, outside the range of catalyst pellets ("
+            << plausiblePelletSize[0] << " to " << plausiblePelletSize[1]
+            << " m)." << nl << "    Lengths in packingDict are in metres"
+            << hint.c_str() << endl;
+    }
+
     const scalar dpv = shape.volumeEquivalentDiameter();
     if (!(dpv >= minBodyRatio*2*rb))
     {
@@ -1028,8 +1148,16 @@ void Foam::rbd::packedBed::run()
                 << " of an earlier run (this one starts anew)" << nl << endl;
         }
     }
+    // No mix of two beds: the files of an earlier one go, or the run stops
+    prepareCase();
+
     runState& st = state_;
     settled_ = false;
+    bool interrupted = false;
+
+    // Ctrl-C (SIGINT) and SIGTERM stop the run at the end of the outer
+    // interval they fall in, with a checkpoint to resume from
+    const stopRequests stopOnSignal;
 
     // Checkpoints by the wall time of this run: they do not change the
     // state, so where they fall does not change the packing
@@ -1108,6 +1236,15 @@ void Foam::rbd::packedBed::run()
 
         goOn = !settled_ && w.time() < ctrl.endTime - 1e-12;
 
+        if (goOn && stopSignal)
+        {
+            Info<< nl << "Stopping on signal " << int(stopSignal)
+                << (stopSignal == SIGINT ? " (SIGINT, Ctrl-C)" : "")
+                << " at t = " << w.time() << " s" << endl;
+            interrupted = true;
+            goOn = false;
+        }
+
         if
         (
             goOn && checkpointInterval > 0
@@ -1119,8 +1256,9 @@ void Foam::rbd::packedBed::run()
         }
     }
 
-    // Stopped by endTime: the run can go on from here with a larger one
-    if (!settled_ && checkpointInterval > 0)
+    // Stopped by endTime: the run can go on from here with a larger one;
+    // stopped by a signal: always, whatever checkpointInterval says
+    if (!settled_ && (checkpointInterval > 0 || interrupted))
     {
         writeCheckpoint(timer.elapsedTime(), cpuTimer.elapsedCpuTime());
     }
@@ -1131,6 +1269,41 @@ void Foam::rbd::packedBed::run()
     // Also leaves the final contact list, sleeping pellets included, in
     // w.contacts() for the contact treatments of the CFD case
     finalOverlap_ = w.currentMaxOverlap();
+
+    // How the run ended
+    if (interrupted)
+    {
+        status_ = runStatus::interrupted;
+    }
+    else if (!settled_)
+    {
+        status_ = runStatus::notSettled;
+    }
+    else
+    {
+        // A tower: the bed stands far higher than its pellets fill the
+        // tube at the expected porosity (pellets released exactly on the
+        // axis land on one another and stay there)
+        const scalar filled =
+            w.bodies().size()*shape.volume()
+           /((1 - epsEstimate_)*pi*sqr(tube_.radius()));
+        if
+        (
+            bedHeight()
+          > stackedHeightFactor*filled + 2*shape.diameter()
+        )
+        {
+            status_ = runStatus::stacked;
+        }
+        else if (st.released < number_)
+        {
+            status_ = runStatus::incomplete;
+        }
+        else
+        {
+            status_ = runStatus::settled;
+        }
+    }
 
     Info<< nl;
     if (settled_)
@@ -1145,7 +1318,7 @@ void Foam::rbd::packedBed::run()
         }
         Info<< nl;
     }
-    else
+    else if (!interrupted)
     {
         WarningInFunction
             << "Not settled by endTime " << ctrl.endTime << " s (kinetic "
@@ -1190,6 +1363,15 @@ void Foam::rbd::packedBed::run()
 
 void Foam::rbd::packedBed::write() const
 {
+    // An interrupted packing is not a bed: its checkpoint is its output
+    if (status_ == runStatus::interrupted)
+    {
+        return;
+    }
+    // The surface and the CFD case only for a packed bed (or one the
+    // user accepts); the report in postProcessing/rbdPackBed always
+    const bool writeCase = status_ == runStatus::settled || acceptStatus_;
+
     const world& w = world_();
     const pelletShape& shape = shape_();
     // Default: below the loose top layer; a bed only about one pellet
@@ -1207,6 +1389,32 @@ void Foam::rbd::packedBed::write() const
     bedCaseSettings caseSettings(caseSettings_());
     caseSettings.setBedHeight(bedHeight());
 
+    // A case sized to the bed: the background grid's cells, and a warning
+    // where the empty tube around the bed is longer than the bed and
+    // than ten pellet diameters (a pressure-drop case needs a few)
+    if (writeCase)
+    {
+        const labelVector& n = caseSettings.blockCells();
+        const scalar dpCase = caseSettings.pelletDiameter();
+        const scalar empty =
+            caseSettings.inletLength() + caseSettings.outletLength();
+        Info<< "CFD background mesh: " << n.x() << " x " << n.y() << " x "
+            << n.z() << " = " << scalar(n.x())*n.y()*n.z() << " cells ("
+            << "bed " << bedHeight() << " m, empty tube " << empty
+            << " m = " << empty/dpCase << " dp)" << nl << endl;
+        if (empty > max(bedHeight(), 10*dpCase))
+        {
+            WarningInFunction
+                << "The CFD case is mostly empty tube: cfdCase/inletLength "
+                << caseSettings.inletLength() << " m and outletLength "
+                << caseSettings.outletLength() << " m ("
+                << empty/dpCase << " dp) around a bed of " << bedHeight()
+                << " m; a few pellet diameters are enough (the defaults are"
+                << " 2 and 3 dp): shorten inletLength and outletLength in "
+                << fileName(dictName_ + ".cfdCase") << endl;
+        }
+    }
+
     // The one check of the CFD case that needs the bed, made before
     // anything is written; its point is the one the case writer uses
     const bedCaseWriter::insideFunction inside
@@ -1214,7 +1422,11 @@ void Foam::rbd::packedBed::write() const
         insidePellet(caseSettings.pelletScale())
     );
     point location;
-    if (!bedCaseWriter::findLocationInMesh(caseSettings, inside, location))
+    if
+    (
+        writeCase
+     && !bedCaseWriter::findLocationInMesh(caseSettings, inside, location)
+    )
     {
         FatalErrorInFunction
             << "Bad entry 'cellsPerDiameter "
@@ -1236,7 +1448,8 @@ void Foam::rbd::packedBed::write() const
     const scalar eps = analysis.get<scalar>("bulkPorosity");
     // Pellet surfaces with the contact treatment at the simulation's own
     // touching contacts
-    const label nTreated = out.writeSTL(caseSettings, w.contacts());
+    const label nTreated =
+        writeCase ? out.writeSTL(caseSettings, w.contacts()) : 0;
 
     dictionary summary;
     summary.add("pellets", w.bodies().size());
@@ -1294,6 +1507,7 @@ void Foam::rbd::packedBed::write() const
     summary.add("lcpFailures", w.stats().lcpFailures);
     summary.add("kineticEnergy", w.kineticEnergy());
     summary.add("settled", Switch(settled_));
+    summary.add("status", runStatusNames[status_]);
     summary.add("contactTreatment", caseSettings.contactTreatment());
     if (nTreated)
     {
@@ -1307,7 +1521,11 @@ void Foam::rbd::packedBed::write() const
         << "Largest interpenetration during the run: "
         << w.stats().maxOverlap << " m ("
         << 100*w.stats().maxOverlap/shape.diameter() << " % of dp)" << nl
-        << "Wrote " << out.directory() << " and " << out.stlFile();
+        << "Wrote " << out.directory();
+    if (writeCase)
+    {
+        Info<< " and " << out.stlFile();
+    }
     if (nTreated)
     {
         Info<< " (" << caseSettings.contactTreatment() << " at " << nTreated
@@ -1320,6 +1538,11 @@ void Foam::rbd::packedBed::write() const
             << summary.get<scalar>("meanAxisAngle") << " deg, order "
             << "parameter " << summary.get<scalar>("axisOrderParameter")
             << nl << endl;
+    }
+
+    if (!writeCase)
+    {
+        return;
     }
 
     // The CFD case around the bed
@@ -1345,6 +1568,198 @@ void Foam::rbd::packedBed::write() const
         Info<< "Removed " << checkpointFile.relative(runTime_.path()).c_str()
             << " (the packing has settled)" << nl << endl;
     }
+}
+
+
+void Foam::rbd::packedBed::setAcceptStatus(const bool accept)
+{
+    acceptStatus_ = accept;
+}
+
+
+void Foam::rbd::packedBed::prepareCase() const
+{
+    const fileName root(runTime_.path());
+
+    // Files made for or from an earlier bed: pellets.stl, the CFD case
+    // rbdPackBed writes, and what the CFD tools made of them
+    DynamicList<fileName> earlier;
+    const auto found = [&](const fileName& relative)
+    {
+        if (Foam::exists(root/relative, false))
+        {
+            earlier.append(relative);
+        }
+    };
+    found(bedOutput::stlName);
+    for (const fileName& f : bedCaseWriter::files())
+    {
+        found(f);
+    }
+    found("constant/polyMesh");
+    found("constant/extendedFeatureEdgeMesh");
+    for (const fileName& f : readDir(root/"constant/triSurface"))
+    {
+        if (f.hasExt("eMesh"))
+        {
+            found("constant/triSurface"/f);
+        }
+    }
+    for (const fileName& d : readDir(root, fileName::DIRECTORY))
+    {
+        scalar t;
+        if
+        (
+            d.starts_with("processor")
+         || (d != "0" && Foam::readScalar(d, t))
+        )
+        {
+            found(d);
+        }
+    }
+    for (const fileName& d : readDir(root/"postProcessing", fileName::DIRECTORY))
+    {
+        if (d != bedOutput::directoryName.name())
+        {
+            found("postProcessing"/d);
+        }
+    }
+
+    if (earlier.size() && !caseSettings_->overwrite())
+    {
+        FatalErrorInFunction
+            << "The case " << root << " holds files of an earlier bed:"
+            << nl << "   ";
+        for (const fileName& f : earlier)
+        {
+            FatalError<< ' ' << f.c_str();
+        }
+        FatalError
+            << nl << "    A new bed with them would mix two beds (the mesh"
+            << " and snappyHexMeshDict of the old one around the new"
+            << " pellets)." << nl
+            << "    Run rbdPackBed -overwrite to remove them and write the "
+            << "whole case anew (or cfdCase/overwrite true), or use "
+            << "another case directory. Nothing written." << nl
+            << exit(FatalError);
+    }
+    for (const fileName& f : earlier)
+    {
+        if (Foam::isDir(root/f))
+        {
+            Foam::rmDir(root/f);
+        }
+        else
+        {
+            Foam::rm(root/f);
+        }
+    }
+    if (earlier.size())
+    {
+        Info<< "Removed " << earlier.size() << " files and directories of "
+            << "an earlier bed (overwrite):";
+        for (const fileName& f : earlier)
+        {
+            Info<< ' ' << f.c_str();
+        }
+        Info<< nl << endl;
+    }
+
+    // The run's own report of an earlier run: replaced as a whole (an
+    // orientation.dat of another shape must not stay beside it)
+    for (const fileName& f : bedOutput::files())
+    {
+        if (f != bedOutput::stlName && isFile(root/f))
+        {
+            Foam::rm(root/f);
+        }
+    }
+}
+
+
+bool Foam::rbd::packedBed::reportOutcome
+(
+    Ostream& os,
+    const string& resumeCommand
+) const
+{
+    const world& w = world_();
+    const word status(runStatusNames[status_]);
+    const fileName summary
+    (
+        (bedOutput::directoryName/bedOutput::summaryName).c_str()
+    );
+
+    if (status_ == runStatus::settled)
+    {
+        os  << "Status: settled (" << w.bodies().size() << " pellets)" << nl
+            << endl;
+        return true;
+    }
+
+    os  << nl << "Status: " << status << nl << "    ";
+    switch (status_)
+    {
+        case runStatus::interrupted:
+            os  << "The run was stopped at t = " << w.time() << " s by a "
+                << "signal. Its state is in "
+                << checkpoint::path(runTime_.path()).relative
+                   (
+                       runTime_.path()
+                   ).c_str()
+                << "; continue it with" << nl << "        "
+                << resumeCommand.c_str() << nl;
+            break;
+        case runStatus::notSettled:
+            os  << "The bed had not settled by simulation/endTime "
+                << controls_.endTime << " s (kinetic energy "
+                << w.kineticEnergy() << " J; released " << state_.released
+                << " of " << number_ << " pellets)." << nl
+                << "    Continue it with a larger simulation/endTime:"
+                << nl << "        " << resumeCommand.c_str() << nl
+                << "    and check the warnings above (lengths in metres?)"
+                << nl;
+            break;
+        case runStatus::incomplete:
+            os  << "Only " << state_.released << " of " << number_
+                << " pellets were placed: the bed reached the release "
+                << "height " << loading_->releaseHeight() << " m." << nl
+                << "    Ask for fewer pellets (pellets/number or fillHeight)"
+                << " or give a taller container/height" << nl;
+            break;
+        case runStatus::stacked:
+            os  << "The pellets stacked into a tower, not a random bed: "
+                << w.bodies().size() << " pellets stand " << bedHeight()
+                << " m high, where they fill about "
+                << w.bodies().size()*shape_->volume()
+                  /((1 - epsEstimate_)*pi*sqr(tube_.radius()))
+                << " m of the tube." << nl
+                << "    Release them off the axis: loading/"
+                << "positionDisturbance (default 0.3 dp; the paper uses up "
+                << "to 0.8 dp)" << nl;
+            break;
+        default:
+            break;
+    }
+    if (status_ != runStatus::interrupted)
+    {
+        os  << "    The report is in " << summary.path().c_str() << " ("
+            << summary.name() << " status " << status << ')' << nl;
+    }
+    if (acceptStatus_ && status_ != runStatus::interrupted)
+    {
+        os  << "    Accepted (-acceptStatus): pellets.stl and the CFD case"
+            << " are written for this bed" << nl << endl;
+        return true;
+    }
+    os  << "    No pellets.stl and no CFD case written"
+        << (
+               status_ == runStatus::interrupted
+             ? ""
+             : " (rbdPackBed -acceptStatus writes them for this bed)"
+           )
+        << nl << endl;
+    return false;
 }
 
 

@@ -22,8 +22,13 @@ Description
     {blockMeshDict,surfaceFeatureExtractDict,snappyHexMeshDict,
     decomposeParDict,controlDict,fvSchemes,fvSolution}, constant/
     {transportProperties,turbulenceProperties}, 0/{U,p}; options in the
-    cfdCase sub-dictionary). Case files that exist are kept unless
-    -overwrite (or cfdCase/overwrite).
+    cfdCase sub-dictionary). A case that holds the files of an earlier
+    bed is refused before packing unless -overwrite (or
+    cfdCase/overwrite), which removes them first: a case never mixes two
+    beds. The run ends with a status (summary entry 'status'): only
+    'settled' exits 0 and writes pellets.stl and the CFD case; notSettled,
+    incomplete, stacked and interrupted (Ctrl-C or SIGTERM, which keep a
+    checkpoint) exit 1 with a message saying what to change.
     Every dictionary entry is validated before anything runs or is written.
 
 Usage
@@ -34,7 +39,12 @@ Usage
         Read this dictionary instead of system/packingDict
 
       - \par -overwrite
-        Replace the CFD case files the case already has
+        Remove the files of an earlier bed (pellets.stl, the CFD case, its
+        mesh and results) and write the case anew
+
+      - \par -acceptStatus
+        Write pellets.stl and the CFD case, and exit 0, for a bed whose
+        status is not 'settled'
 
       - \par -resume
         Continue the packing from postProcessing/rbdPackBed/checkpoint,
@@ -87,10 +97,17 @@ int main(int argc, char *argv[])
     argList::addBoolOption
     (
         "overwrite",
-        "Replace the CFD case files (system/, constant/, 0/) the case"
-        " already has"
+        "Remove the files of an earlier bed (pellets.stl, the CFD case"
+        " files, constant/polyMesh, time and processor directories) and"
+        " write the case anew; without it a case holding them is refused"
     );
 
+    argList::addBoolOption
+    (
+        "acceptStatus",
+        "Write pellets.stl and the CFD case, and exit 0, also for a bed"
+        " whose status is not 'settled' (notSettled, incomplete, stacked)"
+    );
     argList::addBoolOption
     (
         "resume",
@@ -174,12 +191,30 @@ int main(int argc, char *argv[])
         bed.setOverwrite(true);
     }
     bed.writeSettings(Info);
+    if (args.found("acceptStatus"))
+    {
+        bed.setAcceptStatus(true);
+    }
     if (args.found("resume"))
     {
         bed.resume();
     }
     bed.run();
     bed.write();
+
+    // The command that continues this run from its checkpoint
+    string resume("rbdPackBed -case " + runTime.path() + " -resume");
+    if (args.found("dict"))
+    {
+        resume += " -dict " + args.get<fileName>("dict");
+    }
+    if (!bed.reportOutcome(Info, resume))
+    {
+        // Every status but 'settled' is a failure of the run. (argList's
+        // destructor ends the process with status 0: 'return 1' from
+        // main would not reach the shell)
+        UPstream::exit(1);
+    }
 
     Info<< "End\n" << endl;
 
