@@ -40,7 +40,7 @@ Foam::rbd::loadingScheme::loadingScheme
     tilt_(getInRangeOrDefault(dict, "tilt", 45, 0, 180, "deg")),
     positionDisturbance_
     (
-        getNonNegativeOrDefault(dict, "positionDisturbance", 0, "-")
+        getNonNegativeOrDefault(dict, "positionDisturbance", 0.3, "-")
     ),
     angleDisturbance_
     (

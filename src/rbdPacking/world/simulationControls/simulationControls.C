@@ -158,7 +158,7 @@ Foam::rbd::simulationControls::simulationControls
     logInterval(getPositiveOrDefault(d, "logInterval", 0.1, "s")),
     checkpointInterval
     (
-        getNonNegativeOrDefault(d, "checkpointInterval", 3600, "s")
+        getNonNegativeOrDefault(d, "checkpointInterval", 300, "s")
     ),
     restingCompliance(getInRangeOrDefault(d, "restingCompliance", 1e-5, 0,
         0.01, "-")),
