@@ -638,7 +638,20 @@ void Foam::rbd::packedBed::checkPelletSize
     // body: a wall, a coin, a needle or a sliver much thinner than the
     // pellet is wide has a volume-equivalent diameter dpv far below its
     // size, and the CFD grid (cellsPerDiameter per dpv) would be sized to
-    // the sliver (a 1e-9 m high tetrahedron asked for a 1.6 GB tube.stl)
+    // the sliver (a 1e-9 m high tetrahedron asked for a 1.6 GB tube.stl).
+    // A size above the range of catalyst pellets is most often a
+    // dictionary (or an STL) in millimetres: it packs, but 3 m spheres of
+    // 113 t, for tens of seconds of simulated time
+    string hint;
+    if (2*rb > plausiblePelletSize[1])
+    {
+        hint =
+            shape.inputFile().empty()
+          ? ": if pellets/diameter " + Foam::name(shape.diameter())
+          + " is in millimetres, give " + Foam::name(shape.diameter()/1000)
+          : ": if the STL " + shape.inputFile().name()
+          + " is in millimetres, give pellets/scale 0.001";
+    }
     if (!(2*rb >= minPelletSize && 2*rb <= maxPelletSize))
     {
         FatalIOErrorInFunction(pelletsDict)
@@ -646,24 +659,11 @@ void Foam::rbd::packedBed::checkPelletSize
             << "    pellets of shape " << shape.type() << " with a bounding "
             << "diameter of " << 2*rb << " m; allowed: " << minPelletSize
             << " to " << maxPelletSize << " m" << nl
-            << exit(FatalIOError);
+            << "    Lengths in packingDict are in metres" << hint.c_str()
+            << nl << exit(FatalIOError);
     }
-    // A size outside the range of catalyst pellets is most often a
-    // dictionary (or an STL) in millimetres: it packs, but 3 m spheres of
-    // 113 t, for tens of seconds of simulated time
     if (2*rb < plausiblePelletSize[0] || 2*rb > plausiblePelletSize[1])
     {
-        string hint;
-        if (2*rb > plausiblePelletSize[1])
-        {
-            hint =
-                shape.inputFile().empty()
-              ? ": if pellets/diameter " + Foam::name(shape.diameter())
-              + " is in millimetres, give "
-              + Foam::name(shape.diameter()/1000)
-              : ": if the STL " + shape.inputFile().name()
-              + " is in millimetres, give pellets/scale 0.001";
-        }
         WarningInFunction
             << "Pellets of shape " << shape.type() << " in "
             << pelletsDict.name() << " have a bounding diameter of " << 2*rb
