@@ -122,14 +122,38 @@ void Foam::rbd::neighbourList::gridPairs
     const scalar cell = cutoff;
     const scalar cutoff2 = sqr(cutoff);
 
+    // Cells of size cutoff: a pair closer than cutoff lies in one cell or
+    // in two neighbouring ones
     std::vector<std::int64_t> ci(n), cj(n), ck(n);
-    std::vector<std::pair<std::int64_t, label>> keys(n);
-
+    std::int64_t lo[3], hi[3];
     for (label b = 0; b < n; ++b)
     {
         ci[b] = std::int64_t(std::floor(x[b].x()/cell));
         cj[b] = std::int64_t(std::floor(x[b].y()/cell));
         ck[b] = std::int64_t(std::floor(x[b].z()/cell));
+        const std::int64_t c[3] = {ci[b], cj[b], ck[b]};
+        for (int d = 0; d < 3; ++d)
+        {
+            lo[d] = b ? std::min(lo[d], c[d]) : c[d];
+            hi[d] = b ? std::max(hi[d], c[d]) : c[d];
+        }
+    }
+
+    // A dense grid over the bodies' box (padded by one cell, so that the
+    // 27 neighbours of a cell are in it) where it is small, as in a tube;
+    // else (a pellet thrown far out) the cells sorted by key
+    const std::int64_t ni = hi[0] - lo[0] + 3;
+    const std::int64_t nj = hi[1] - lo[1] + 3;
+    const std::int64_t nk = hi[2] - lo[2] + 3;
+    if (double(ni)*nj*nk <= double(maxDenseCellsPerBody*n + 1000))
+    {
+        denseGridPairs(x, cutoff2, ci, cj, ck, lo, ni, nj, nk, pairs);
+        return;
+    }
+
+    std::vector<std::pair<std::int64_t, label>> keys(n);
+    for (label b = 0; b < n; ++b)
+    {
         keys[b] = {cellKey(ci[b], cj[b], ck[b]), b};
     }
     std::sort(keys.begin(), keys.end());
@@ -154,6 +178,75 @@ void Foam::rbd::neighbourList::gridPairs
                     for (; it != keys.end() && it->first == key; ++it)
                     {
                         const label o = it->second;
+                        if (o > b && magSqr(x[o] - x[b]) < cutoff2)
+                        {
+                            pairs.append(labelPair(b, o));
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::rbd::neighbourList::denseGridPairs
+(
+    const UList<point>& x,
+    const scalar cutoff2,
+    const std::vector<std::int64_t>& ci,
+    const std::vector<std::int64_t>& cj,
+    const std::vector<std::int64_t>& ck,
+    const std::int64_t lo[3],
+    const std::int64_t ni,
+    const std::int64_t nj,
+    const std::int64_t nk,
+    DynamicList<labelPair>& pairs
+)
+{
+    const label n = x.size();
+
+    // Cell of each body in the padded grid, and the bodies of each cell
+    // in ascending order (a counting sort, stable in the body index): the
+    // pairs come out in the order of the sorted-key search, body by body,
+    // neighbour cell by neighbour cell, so the contact list and with it
+    // the packing are the same bit for bit
+    const auto cellOf = [&](const label b)
+    {
+        return
+            ((ci[b] - lo[0] + 1)*nj + (cj[b] - lo[1] + 1))*nk
+          + (ck[b] - lo[2] + 1);
+    };
+    std::vector<label> start(ni*nj*nk + 1, 0);
+    std::vector<std::int64_t> cellOfBody(n);
+    for (label b = 0; b < n; ++b)
+    {
+        cellOfBody[b] = cellOf(b);
+        ++start[cellOfBody[b] + 1];
+    }
+    for (std::size_t c = 1; c < start.size(); ++c)
+    {
+        start[c] += start[c - 1];
+    }
+    std::vector<label> members(n), fill(start.begin(), start.end() - 1);
+    for (label b = 0; b < n; ++b)
+    {
+        members[fill[cellOfBody[b]]++] = b;
+    }
+
+    for (label b = 0; b < n; ++b)
+    {
+        const std::int64_t c0 = cellOfBody[b];
+        for (int di = -1; di <= 1; ++di)
+        {
+            for (int dj = -1; dj <= 1; ++dj)
+            {
+                for (int dk = -1; dk <= 1; ++dk)
+                {
+                    const std::int64_t c = c0 + (di*nj + dj)*nk + dk;
+                    for (label m = start[c]; m < start[c + 1]; ++m)
+                    {
+                        const label o = members[m];
                         if (o > b && magSqr(x[o] - x[b]) < cutoff2)
                         {
                             pairs.append(labelPair(b, o));
