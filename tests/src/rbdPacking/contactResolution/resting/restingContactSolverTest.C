@@ -181,45 +181,65 @@ TEST(restingCompliance, leavesSphereContactsExact)
 
 namespace
 {
-    //- A cylinder standing on its flat face on a plane tilted by 20
-    //  degrees, mu 0.5 (tan 20 deg = 0.36: it sticks), touching at six
-    //  rim points: the velocity one step of the resultant of gravity and
-    //  all contact forces gives its contact points [m/s]; the normal
-    //  forces in phi [N]
-    scalar inclineResidual(const bool coupled, List<scalar>& phi)
+    //- A cylinder standing on its flat face on a plane tilted by tilt
+    //  [deg], friction coefficient mu, touching at six rim points, solved
+    //  for one step with the friction coupled or staggered
+    struct incline
     {
-        const scalar tilt = 20*M_PI/180;
-        const vector n(Foam::sin(tilt), 0, Foam::cos(tilt));
-        const vector e1(Foam::cos(tilt), 0, -Foam::sin(tilt));
-        const vector e2(0, 1, 0);
-        const point x(a*n);
+        //- The velocity one step of the resultant of gravity and all
+        //  contact forces gives its contact points [m/s]
+        scalar residual;
 
-        List<rigidBody> bs(1);
-        bs[0] = rigidBody(m, Ib, x, quaternion(vector(0, 1, 0), tilt), true);
-        DynamicList<contact> cs;
-        for (label k = 0; k < 6; ++k)
+        //- Acceleration of the centre down the slope [m/s^2]
+        scalar downhill;
+
+        //- Sum of the normal forces [N]
+        scalar normalForce;
+
+        //- The normal forces [N]
+        List<scalar> phi;
+
+        incline(const scalar tiltDeg, const scalar mu, const bool coupled)
         {
-            const scalar angle = 2*M_PI*(k + 0.3)/6;
-            contact c;
-            c.i = 0;
-            c.k = tubeBottom;
-            c.n = n;
-            c.mu = 0.5;
-            c.p = a*(Foam::cos(angle)*e1 + Foam::sin(angle)*e2);
-            c.ri = c.p - x;
-            c.rk = c.p;
-            cs.append(c);
-        }
+            const scalar tilt = tiltDeg*M_PI/180;
+            const vector n(Foam::sin(tilt), 0, Foam::cos(tilt));
+            const vector e1(Foam::cos(tilt), 0, -Foam::sin(tilt));
+            const vector e2(0, 1, 0);
+            const point x(a*n);
 
-        const restingContactSolver rs(rbdTest::parseDict(""), 1e-5, coupled);
-        List<vector> Fs(1, vector(0, 0, -m*g));
-        List<vector> taus(1, Zero);
-        rs.solve(bs, cs, boolList(1, false), h, Fs, taus);
-        phi = rs.normalForces();
-        const vector dv(h*Fs[0]/m);
-        const vector dOmega(h*(bs[0].invInertia() & taus[0]));
-        return mag(dv) + a*mag(dOmega);
-    }
+            List<rigidBody> bs(1);
+            bs[0] =
+                rigidBody(m, Ib, x, quaternion(vector(0, 1, 0), tilt), true);
+            DynamicList<contact> cs;
+            for (label k = 0; k < 6; ++k)
+            {
+                const scalar angle = 2*M_PI*(k + 0.3)/6;
+                contact c;
+                c.i = 0;
+                c.k = tubeBottom;
+                c.n = n;
+                c.mu = mu;
+                c.p = a*(Foam::cos(angle)*e1 + Foam::sin(angle)*e2);
+                c.ri = c.p - x;
+                c.rk = c.p;
+                cs.append(c);
+            }
+
+            const restingContactSolver rs
+            (
+                rbdTest::parseDict(""), 1e-5, coupled
+            );
+            List<vector> Fs(1, vector(0, 0, -m*g));
+            List<vector> taus(1, Zero);
+            rs.solve(bs, cs, boolList(1, false), h, Fs, taus);
+            phi = rs.normalForces();
+            normalForce = sum(phi);
+            const vector dv(h*Fs[0]/m);
+            const vector dOmega(h*(bs[0].invInertia() & taus[0]));
+            residual = mag(dv) + a*mag(dOmega);
+            downhill = (Fs[0] & e1)/m;
+        }
+    };
 }
 
 
@@ -230,22 +250,70 @@ TEST(restingFriction, holdsACylinderOnAnInclineForTheForcesApplied)
     // hold the cylinder; normal forces and friction found together do:
     // the resultant of gravity and all contact forces vanishes, and no
     // contact pulls
-    List<scalar> phi;
-    EXPECT_LT(inclineResidual(true, phi), 1e-6);
-    for (const scalar p : phi)
+    const incline held(20, 0.5, true);
+    EXPECT_LT(held.residual, 1e-6);
+    for (const scalar p : held.phi)
     {
         EXPECT_GE(p, 0);
     }
 }
 
 
-TEST(restingFriction, staggeredLeavesTheInclineUnbalanced)
+TEST(restingFriction, staggeredResistsTheSlipOnAnIncline)
 {
     // restingFriction staggered (friction for the frictionless normal
-    // forces, then the normal forces again): the known defect, 21 % of the
-    // weight left unbalanced (about 2 mm/s per 1 ms step)
-    List<scalar> phi;
-    EXPECT_GT(inclineResidual(false, phi), 1e-3);
+    // forces, then the normal forces again) does not hold the cylinder
+    // (the known defect of the README: measured residual 2.0e-3 m/s per
+    // 1 ms step, 21 % of the weight), but its friction must oppose the
+    // slip: without friction the residual is g sin(20 deg) h = 3.4e-3
+    // m/s. Asserted: at most 75 % of that (measured 60 %), no contact
+    // pulls, and the normal forces carry the normal weight
+    const incline frictionless(20, 0, false);
+    const incline staggered(20, 0.5, false);
+    EXPECT_NEAR(frictionless.residual, g*Foam::sin(20*M_PI/180)*h, 1e-9);
+    std::cout
+        << "[ measured ] staggered residual " << staggered.residual
+        << " m/s, " << staggered.residual/frictionless.residual
+        << " of the frictionless" << std::endl;
+    EXPECT_LT(staggered.residual, 0.75*frictionless.residual);
+    for (const scalar p : staggered.phi)
+    {
+        EXPECT_GE(p, 0);
+    }
+    EXPECT_NEAR
+    (
+        staggered.normalForce, m*g*Foam::cos(20*M_PI/180), 1e-4*m*g
+    );
+}
+
+
+TEST(restingFriction, slidesAtTheCoulombRateBeyondTheCone)
+{
+    // tan 35 deg = 0.70 > mu = 0.3: the cylinder slides (it tips only
+    // beyond 45 deg), the normal forces carry m g cos(35 deg) and
+    // Coulomb's friction mu m g cos(35 deg) acts against the slip, so the
+    // centre accelerates down the slope at g (sin - mu cos) = 3.22 m/s^2.
+    // Coupled: that, to 1e-3. Staggered (two Gauss-Seidel sweeps of
+    // friction for the frictionless normal forces): never more friction
+    // than Coulomb's, and at least 60 % of it (measured 84 %)
+    const scalar tilt = 35*M_PI/180;
+    const scalar mu = 0.3;
+    const scalar coulomb = mu*g*Foam::cos(tilt);
+    const scalar exact = g*Foam::sin(tilt) - coulomb;
+
+    const incline coupled(35, mu, true);
+    EXPECT_NEAR(coupled.downhill, exact, 1e-3*exact);
+    EXPECT_NEAR(coupled.normalForce, m*g*Foam::cos(tilt), 1e-4*m*g);
+
+    const incline staggered(35, mu, false);
+    const scalar friction = g*Foam::sin(tilt) - staggered.downhill;
+    std::cout
+        << "[ measured ] staggered friction/Coulomb's " << friction/coulomb
+        << ", coupled downhill/exact " << coupled.downhill/exact
+        << std::endl;
+    EXPECT_LE(friction, (1 + 1e-3)*coulomb);
+    EXPECT_GE(friction, 0.6*coulomb);
+    EXPECT_NEAR(staggered.normalForce, m*g*Foam::cos(tilt), 1e-4*m*g);
 }
 
 

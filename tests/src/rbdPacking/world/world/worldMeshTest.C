@@ -305,12 +305,15 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
     // not met here in general. The runs are chaotic, and the tetrahedra's
     // acute edges make contacts that are taken too deep or missed (see
     // meshContacts.C): a run that is quiet can find a contact 0.4 mm
-    // deep in one step. Measured (% dpv): seeds 1-6 0.08-0.8, and 6.9
-    // for seed 3; seeds 7-12 0.3-1.4 one build earlier (seed 3 then
-    // 6.7); with the staggered friction of earlier versions seven of
-    // seeds 1-12 were above 2.5 (up to 10). Asserted: at most
-    // one of seeds 1-6 above 2.5 % dpv (the known gap stated in the
-    // README) and their median below 1 %; the other checks every run
+    // deep in one step. Measured (% dpv, seeds 1-6): 0.42, 0.076, 6.9,
+    // 0.45, 0.44, 0.78; seed 3 was 6.7 one build earlier, seeds 7-12
+    // 0.3-1.4; with the staggered friction of earlier versions seven of
+    // seeds 1-12 were above 2.5 (up to 10). Asserted: each seed below its
+    // own bound, about twice its measured value (at least 0.5 %), seed 3
+    // below 10 % (the known gap stated in the README: one run in six
+    // overlaps by several % dpv); their median below 1 %; the other
+    // checks every run
+    const scalar bound[6] = {0.01, 0.005, 0.10, 0.01, 0.01, 0.015};
     std::vector<scalar> overlaps;
     for (unsigned seed = 1; seed <= 6; ++seed)
     {
@@ -344,15 +347,10 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
         std::cout
             << "[ measured ] tetrahedra, seed " << seed << ": largest overlap "
             << 100*overlaps.back() << " % dpv" << std::endl;
+        EXPECT_LT(overlaps.back(), bound[seed - 1]) << "seed " << seed;
     }
     std::remove(file.c_str());
 
-    label above = 0;
-    for (const scalar o : overlaps)
-    {
-        above += o > 0.025;
-    }
-    EXPECT_LE(above, 1);
     std::sort(overlaps.begin(), overlaps.end());
     EXPECT_LT(0.5*(overlaps[2] + overlaps[3]), 0.01);
 }
