@@ -331,32 +331,48 @@ void Foam::rbd::bedVoidage::writeRadialProfile
     Ostream& os,
     const label nBins,
     const scalar dp,
+    const scalar dpv,
     const bool sphereCorrelations
 ) const
 {
     const scalarField r(radialBinCentres(nBins));
     const scalarField eps(radialProfile(nBins));
-    const scalarField zWall((R_ - r)/dp);
+    const scalarField zWall((R_ - r)/dpv);
     const scalar epsBulk = bulkPorosity();
+    // The sphere correlations' N: dt/dpv, which is dt/dp for spheres
     const scalar N = 2*R_/dp;
+    const scalar Nv = 2*R_/dpv;
+    const bool oneDiameter = dp == dpv;
+    // Name of the wall-distance column
+    const char* zName = oneDiameter ? "(R-r)/dp" : "(R-r)/dpv";
 
     scalarField deKlerk, mueller;
     if (sphereCorrelations)
     {
-        this->sphereCorrelations(r, dp, deKlerk, mueller);
+        this->sphereCorrelations(r, dpv, deKlerk, mueller);
     }
 
     const bool withMueller =
-        sphereCorrelations && correlations::muellerApplies(N);
+        sphereCorrelations && correlations::muellerApplies(Nv);
 
     const int oldPrecision = os.precision(10);
 
     os  << "# Radial void fraction, eq 39: eps(r) = 1 - S_int(r)/S_total(r),"
         << " at bin centres" << nl
         << "# tube radius R = " << R_ << " m, z from " << zLow_ << " to "
-        << zHigh_ << " m, pellets " << solids_.size() << ", dp = " << dp
-        << " m, N = dt/dp = " << N << nl
-        << "# bulk porosity " << epsBulk << nl;
+        << zHigh_ << " m, pellets " << solids_.size() << nl;
+    if (oneDiameter)
+    {
+        os  << "# pellet diameter dp = " << dp << " m, N = dt/dp = " << N
+            << nl;
+    }
+    else
+    {
+        os  << "# pellet diameter dp = " << dp << " m (bounding), N = dt/dp"
+            << " = " << N << "; volume-equivalent diameter dpv = " << dpv
+            << " m, Nv = dt/dpv = " << Nv << nl;
+    }
+    os  << "# bulk porosity " << epsBulk << nl;
     if (sphereCorrelations)
     {
         os  << "# deKlerk: de Klerk 2003 (recalled form), eps_b = bulk"
@@ -372,18 +388,19 @@ void Foam::rbd::bedVoidage::writeRadialProfile
                 << statistic(correlations::rSquared(eps, mueller)).c_str()
                 << ", RMSE = "
                 << statistic(correlations::rmse(eps, mueller)).c_str() << nl
-                << "# r [m]  (R-r)/dp [-]  eps [-]  deKlerk [-]  Mueller [-]"
-                << nl;
+                << "# r [m]  " << zName << " [-]  eps [-]  deKlerk [-]"
+                << "  Mueller [-]" << nl;
         }
         else
         {
-            os  << muellerNotApplicable(N).c_str()
-                << "# r [m]  (R-r)/dp [-]  eps [-]  deKlerk [-]" << nl;
+            os  << muellerNotApplicable(Nv).c_str()
+                << "# r [m]  " << zName << " [-]  eps [-]  deKlerk [-]"
+                << nl;
         }
     }
     else
     {
-        os  << "# r [m]  (R-r)/dp [-]  eps [-]" << nl;
+        os  << "# r [m]  " << zName << " [-]  eps [-]" << nl;
     }
 
     forAll(r, k)
@@ -479,7 +496,8 @@ void Foam::rbd::bedVoidage::writeAxialProfile
         << " equal slabs" << nl
         << "# tube radius R = " << R_ << " m, z from " << zLow_ << " to "
         << zHigh_ << " m, pellets " << solids_.size() << nl
-        << "# bulk porosity " << bulkPorosity() << nl
+        << "# mean void fraction from z = " << zLow_ << " to " << zHigh_
+        << " m: " << bulkPorosity() << nl
         << "# z [m] (slab centre)  eps [-]" << nl;
 
     forAll(z, k)
@@ -497,13 +515,14 @@ void Foam::rbd::bedVoidage::write
     const label nRadialBins,
     const label nAxialBins,
     const scalar dp,
+    const scalar dpv,
     const bool sphereCorrelations
 ) const
 {
     mkDir(dir);
     {
         OFstream os(dir/radialFile);
-        writeRadialProfile(os, nRadialBins, dp, sphereCorrelations);
+        writeRadialProfile(os, nRadialBins, dp, dpv, sphereCorrelations);
     }
     {
         OFstream os(dir/axialFile);
@@ -512,7 +531,7 @@ void Foam::rbd::bedVoidage::write
     if (sphereCorrelations)
     {
         OFstream os(dir/correlationsFile);
-        writeSphereCorrelations(os, correlationPoints, dp);
+        writeSphereCorrelations(os, correlationPoints, dpv);
     }
 }
 

@@ -12,6 +12,7 @@
 #include "orientationStatistics.H"
 #include "contactGeometry.H"
 #include "stlIO.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -31,6 +32,21 @@ const Foam::word Foam::rbd::bedOutput::summaryName("summary");
 
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::scalar Foam::rbd::bedOutput::bedTop
+(
+    const pelletShape& shape,
+    const UList<rigidBody>& bodies
+)
+{
+    scalar top = 0;
+    for (const rigidBody& b : bodies)
+    {
+        top = max(top, b.x().z() + shape.boundingRadius());
+    }
+    return top;
+}
+
 
 Foam::fileNameList Foam::rbd::bedOutput::files()
 {
@@ -128,14 +144,36 @@ Foam::dictionary Foam::rbd::bedOutput::writeProfiles
     {
         solids.reset(new meshSolidSet(shape_.mesh(), centres, rotations));
     }
+    // Bulk porosity and radial profile below H; the axial profile from
+    // the floor to the bed top (the top of the highest pellet, as
+    // packedBed::bedHeight), the loose top layer included
     const bedVoidage voidage(solids(), tube_.radius(), H);
+    const bedVoidage wholeBed
+    (
+        solids(), tube_.radius(), max(H, bedTop(shape_, bodies_))
+    );
 
     mkDir(dir_);
-    voidage.write
-    (
-        dir_, radialBins, axialBins, shape_.volumeEquivalentDiameter(),
-        shape_.isSphere()
-    );
+    {
+        OFstream os(dir_/bedVoidage::radialFile);
+        voidage.writeRadialProfile
+        (
+            os, radialBins, shape_.diameter(),
+            shape_.volumeEquivalentDiameter(), shape_.isSphere()
+        );
+    }
+    {
+        OFstream os(dir_/bedVoidage::axialFile);
+        wholeBed.writeAxialProfile(os, axialBins);
+    }
+    if (shape_.isSphere())
+    {
+        OFstream os(dir_/bedVoidage::correlationsFile);
+        voidage.writeSphereCorrelations
+        (
+            os, bedVoidage::correlationPoints, shape_.diameter()
+        );
+    }
 
     dictionary analysis;
     analysis.add("bulkPorosity", voidage.bulkPorosity());
@@ -302,6 +340,109 @@ void Foam::rbd::bedOutput::writeOrientation
 }
 
 
+Foam::string Foam::rbd::bedOutput::summaryUnit(const word& key)
+{
+    // Unit and meaning of every entry the summary may hold; the
+    // sub-dictionaries' entries (bulkPorosityCorrelations, deKlerk { } ...)
+    // are looked up by their own keys
+    static const std::initializer_list<std::pair<const char*, const char*>>
+    units
+    {
+        {"pellets", "[-] number of pellets in the bed"},
+        {"requestedPellets", "[-] number asked for"},
+        {"status", "outcome of the run"},
+        {"shape", "pellet shape"},
+        {"tubeDiameter", "[m] dt"},
+        {"pelletDiameter", "[m] dp, the pellet's bounding diameter"},
+        {"volumeEquivalentDiameter", "[m] dpv, of the sphere of equal volume"},
+        {"diameterRatio", "[-] N = dt/dp"},
+        {"volumeEquivalentDiameterRatio", "[-] Nv = dt/dpv"},
+        {"bulkPorosity", "[-] below porosityHeight"},
+        {"porosityHeight", "[m] top of the bulk porosity's slab"},
+        {
+            "bulkPorosityCorrelations",
+            "[-] published bulk porosities at Nv = dt/dpv"
+        },
+        {"dixon", "[-]"},
+        {"foumeny", "[-]"},
+        {"benyahiaONeill", "[-]"},
+        {"benyahiaONeillAnyShape", "[-]"},
+        {
+            "radialCorrelations",
+            "radial profile against the sphere correlations"
+        },
+        {"rSquared", "[-] R^2"},
+        {"rmse", "[-] root mean square error"},
+        {"bedHeight", "[m] top of the highest pellet"},
+        {"bedPorosity", "[-] floor to bedHeight"},
+        {"maxOverlap", "[m] largest interpenetration during the run"},
+        {"finalMaxOverlap", "[m] largest interpenetration at the end"},
+        {"simulatedTime", "[s]"},
+        {"wallTime", "[s]"},
+        {"cpuTime", "[s]"},
+        {"steps", "[-] time steps"},
+        {"collisions", "[-]"},
+        {"lcpFailures", "[-] resting-contact solves that failed"},
+        {"kineticEnergy", "[J] at the end"},
+        {"settled", "whether the bed came to rest"},
+        {"contactTreatment", "of the pellet surfaces for the CFD mesh"},
+        {"treatedContacts", "[-]"},
+        {"orientedPellets", "[-] pellets with centres below porosityHeight"},
+        {"meanAxisAngle", "[deg] pellet axis to tube axis"},
+        {"stdDevAxisAngle", "[deg]"},
+        {"axisOrderParameter", "[-] <P2(cos angle)>"}
+    };
+    for (const auto& u : units)
+    {
+        if (key == u.first)
+        {
+            return u.second;
+        }
+    }
+    return string::null;
+}
+
+
+void Foam::rbd::bedOutput::writeCommented
+(
+    Ostream& os,
+    const dictionary& dict
+)
+{
+    for (const entry& e : dict)
+    {
+        const string unit(summaryUnit(e.keyword()));
+        if (e.isDict())
+        {
+            if (!unit.empty())
+            {
+                os.indent();
+                os  << "// " << unit.c_str() << nl;
+            }
+            os.beginBlock(e.keyword());
+            writeCommented(os, e.dict());
+            os.endBlock();
+            continue;
+        }
+        // The entry on one line, the comment after it
+        OStringStream line;
+        e.write(line);
+        std::string text(line.str());
+        while (!text.empty() && text.back() == '\n')
+        {
+            text.pop_back();
+        }
+        os.indent();
+        os  << text.c_str();
+        if (!unit.empty())
+        {
+            os  << "  // " << unit.c_str();
+        }
+        os  << nl;
+    }
+}
+
+
 void Foam::rbd::bedOutput::writeSummary(const dictionary& summary) const
 {
     mkDir(dir_);
@@ -319,7 +460,7 @@ void Foam::rbd::bedOutput::writeSummary(const dictionary& summary) const
         os.endBlock();
         IOobject::writeDivider(os);
         os  << nl;
-        summary.write(os, false);
+        writeCommented(os, summary);
         IOobject::writeEndDivider(os);
     }
     commit(tmp, target);
