@@ -5,6 +5,9 @@
 #include "stlIO.H"
 #include "cgalMeshTools.H"
 #include "error.H"
+#include "mergePoints.H"
+#include "boundBox.H"
+#include "DynamicList.H"
 
 #include <cstdint>
 #include <cstring>
@@ -37,6 +40,47 @@ namespace
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
+Foam::label Foam::rbd::mergeCloseVertices
+(
+    pointField& points,
+    List<triFace>& faces,
+    const scalar relTol
+)
+{
+    if (points.empty())
+    {
+        return 0;
+    }
+    const boundBox bb(points);
+    labelList pointMap;
+    pointField merged;
+    if
+    (
+        !Foam::mergePoints
+        (
+            points, relTol*bb.mag(), false, pointMap, merged, bb.min()
+        )
+    )
+    {
+        return 0;
+    }
+    const label nMerged = points.size() - merged.size();
+    points.transfer(merged);
+
+    DynamicList<triFace> kept(faces.size());
+    for (const triFace& f : faces)
+    {
+        const triFace g(pointMap[f[0]], pointMap[f[1]], pointMap[f[2]]);
+        if (g[0] != g[1] && g[1] != g[2] && g[2] != g[0])
+        {
+            kept.append(g);
+        }
+    }
+    faces.transfer(kept);
+    return nMerged;
+}
+
+
 bool Foam::rbd::readSTL
 (
     const fileName& file,
@@ -58,6 +102,9 @@ bool Foam::rbd::readSTL
     {
         return false;
     }
+    // Before the closure check: vertices that differ by a rounding error
+    // are one vertex (relative tolerance: no unit assumed for the file)
+    mergeCloseVertices(points, faces);
     points *= scale;
 
     triMesh m(std::move(points), std::move(faces));
