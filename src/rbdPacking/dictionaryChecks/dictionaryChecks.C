@@ -280,4 +280,26 @@ void Foam::rbd::checkKnownEntries
 }
 
 
+Foam::string Foam::rbd::inWords
+(
+    const UList<word>& words,
+    const char* conjunction
+)
+{
+    string s;
+    forAll(words, i)
+    {
+        if (i > 0)
+        {
+            s +=
+                i + 1 == words.size()
+              ? " " + std::string(conjunction) + " "
+              : std::string(", ");
+        }
+        s += words[i];
+    }
+    return s;
+}
+
+
 // ************************************************************************* //

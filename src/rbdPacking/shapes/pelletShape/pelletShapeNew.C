@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pelletShape.H"
+#include "dictionaryChecks.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -21,8 +22,9 @@ Foam::autoPtr<Foam::rbd::pelletShape> Foam::rbd::pelletShape::New
     {
         FatalIOErrorInFunction(dict)
             << "Bad entry 'shape " << shapeType << ";' in " << dict.name()
-            << nl << "    allowed: one of "
-            << dictionaryConstructorTablePtr_->sortedToc() << nl
+            << nl << "    allowed: "
+            << inWords(dictionaryConstructorTablePtr_->sortedToc()).c_str()
+            << nl
             << exit(FatalIOError);
     }
 

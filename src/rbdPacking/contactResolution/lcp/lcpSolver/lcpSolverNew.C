@@ -21,13 +21,12 @@ Foam::autoPtr<Foam::rbd::lcpSolver> Foam::rbd::lcpSolver::New
 
     if (!cstrIter.found())
     {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "lcpSolver",
-            solverType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+        // (FatalIOErrorInLookup would print the table in list syntax)
+        FatalIOErrorInFunction(dict)
+            << "Unknown lcpSolver type " << solverType << " in "
+            << dict.name() << nl << "    Valid lcpSolver types: "
+            << inWords(dictionaryConstructorTablePtr_->sortedToc()).c_str()
+            << nl << exit(FatalIOError);
     }
 
     return autoPtr<lcpSolver>
