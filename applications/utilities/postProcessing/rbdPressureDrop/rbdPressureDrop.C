@@ -8,14 +8,23 @@ Group
     grpPostProcessingUtilities
 
 Description
-    Compare the pressure drop over the packed section of a bed case that
-    rbdPackBed wrote and simpleFoam solved with the correlations of Ergun
-    and of Eisfeld & Schnitzlein for the bed's own porosity
-    (Foam::rbd::pressureDropComparison).
+    Compare the pressure drop of a bed case that rbdPackBed wrote and
+    simpleFoam solved with the correlations of Ergun and of Eisfeld &
+    Schnitzlein, each section at its own porosity
+    (Foam::rbd::pressureDropComparison):
+    - the packed section, floor to porosityHeight, without the loose top
+      layer, at the summary's bulkPorosity: the pressure on its top plane
+      is the area average of the cell values of p of the latest time on
+      the plane (Foam::rbd::planeSection, as the function objects sample);
+    - the whole bed, floor to the top of the highest pellet, at the
+      summary's bedPorosity (the function objects pBedBottom, pBedTop).
+    Prints the porosity each used and whether the case lies in each
+    correlation's range (Re_p, Nv = dt/dpv, porosity, shape).
 
     Reads postProcessing/rbdPackBed/summary, constant/transportProperties,
-    system/controlDict and the last values of the function objects
-    pBedBottom, pBedTop and flowRate; prints the comparison and writes
+    system/controlDict, the last values of the function objects
+    pBedBottom, pBedTop and flowRate, and the mesh and p of the latest
+    time; prints the comparison and writes
     postProcessing/pressureDrop/comparison. Exits non-zero if the
     simulated pressure drop is missing (no function-object output), not
     finite or not positive.
@@ -31,7 +40,10 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
+#include "Time.H"
+#include "polyMesh.H"
 #include "pressureDropComparison.H"
+#include "planeSection.H"
 
 using namespace Foam;
 
@@ -56,11 +68,57 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
 
-    const rbd::pressureDropComparison comparison
+    rbd::pressureDropComparison comparison
     (
         args.path(),
         args.getOrDefault<word>("shape", word::null)
     );
+
+    // The packed section's top plane, sampled on the latest solution
+    if (comparison.hasPackedSection())
+    {
+        #include "createTime.H"
+        const instantList times(runTime.times());
+        const fileName pFile
+        (
+            runTime.path()/times.last().name()/"p"
+        );
+        if (times.last().value() > 0 && isFile(pFile))
+        {
+            runTime.setTime(times.last(), times.size() - 1);
+            const polyMesh mesh
+            (
+                IOobject
+                (
+                    polyMesh::defaultRegion,
+                    runTime.timeName(),
+                    runTime,
+                    IOobject::MUST_READ
+                )
+            );
+            const scalar z = comparison.packedTopHeight();
+            scalar area = 0;
+            const scalar p = rbd::planeSection::areaAverage
+            (
+                rbd::planeSection::readInternalField(pFile, mesh.nCells()),
+                rbd::planeSection::cellAreas
+                (
+                    mesh.points(), mesh.faces(), mesh.faceOwner(),
+                    mesh.faceNeighbour(), mesh.nCells(), z
+                ),
+                area
+            );
+            Info<< "p on the packed section's top plane z = " << z
+                << " m (time " << runTime.timeName() << ", fluid area "
+                << area << " m^2): " << p << " m^2/s^2" << nl << endl;
+            comparison.setPackedTopPressure(p);
+        }
+        else
+        {
+            Info<< "No solution (p of a time > 0) in " << runTime.path()
+                << ": the packed section is not measured" << nl << endl;
+        }
+    }
     // (the constructor refuses a pressure drop that is not positive, a
     // flow rate that is not, and a viscosity out of range: nothing is
     // written then)

@@ -347,4 +347,30 @@ Foam::scalarField Foam::rbd::correlations::evaluate
 }
 
 
+Foam::rbd::correlations::pressureDropRange
+Foam::rbd::correlations::ergunRange()
+{
+    return pressureDropRange
+    {
+        0, 2500, true,
+        10, GREAT,
+        0, 1,
+        wordList({"sphere"})
+    };
+}
+
+
+Foam::rbd::correlations::pressureDropRange
+Foam::rbd::correlations::eisfeldSchnitzleinRange()
+{
+    return pressureDropRange
+    {
+        0.01, 17635, false,
+        1.624, 250,
+        0.330, 0.882,
+        wordList({"sphere", "cylinder"})
+    };
+}
+
+
 // ************************************************************************* //

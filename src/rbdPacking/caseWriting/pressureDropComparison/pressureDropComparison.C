@@ -12,7 +12,9 @@
 #include "Pair.H"
 #include "mathematicalConstants.H"
 #include "dimensionedScalar.H"
+#include "Switch.H"
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
@@ -133,16 +135,22 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
     rho_(0),
     velocity_(0),
     pBottom_(0),
-    pTop_(0)
+    pTop_(0),
+    boundingDiameter_(0),
+    bulkPorosity_(-1),
+    porosityHeight_(-1),
+    zBottom_(0),
+    pPackedTop_(std::numeric_limits<scalar>::quiet_NaN())
 {
     const dictionary summary
     (
         readFoamFile(caseDir_/"postProcessing/rbdPackBed/summary")
     );
 
+    pelletShape_ = summary.getOrDefault<word>("shape", "unknown");
     if (shape_.empty())
     {
-        const word pellet = summary.getOrDefault<word>("shape", "unknown");
+        const word& pellet = pelletShape_;
         if (pellet == "sphere" || pellet == "cylinder")
         {
             shape_ = pellet + "s";
@@ -152,14 +160,15 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
             FatalErrorInFunction
                 << "No Eisfeld-Schnitzlein constants for pellets of shape '"
                 << pellet << "' (summary of " << caseDir_ << "); name the"
-                << " family to use: one of " << shapes << exit(FatalError);
+                << " family to use with -shape: " << inWords(shapes).c_str()
+                << exit(FatalError);
         }
     }
     if (!shapes.found(shape_))
     {
         FatalErrorInFunction
             << "No Eisfeld-Schnitzlein constants for shape '" << shape_
-            << "'; have " << shapes << exit(FatalError);
+            << "'; have " << inWords(shapes).c_str() << exit(FatalError);
     }
     porosity_ = getInRangeOrDefault(summary, "bedPorosity", -1, 0, 1, "-");
     if (!(porosity_ > 0 && porosity_ < 1))
@@ -177,7 +186,16 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
         summary.found("volumeEquivalentDiameter")
       ? getPositive(summary, "volumeEquivalentDiameter", "m")
       : getPositive(summary, "pelletDiameter", "m");
+    boundingDiameter_ = getPositive(summary, "pelletDiameter", "m");
     bedHeight_ = getPositive(summary, "bedHeight", "m");
+    // The packed section: the slab of the bulk porosity (summaries
+    // without it give the whole bed only)
+    if (summary.found("porosityHeight") && summary.found("bulkPorosity"))
+    {
+        porosityHeight_ = getPositive(summary, "porosityHeight", "m");
+        bulkPorosity_ =
+            getInRangeOrDefault(summary, "bulkPorosity", -1, 0, 1, "-");
+    }
 
     const dictionary transport
     (
@@ -201,6 +219,7 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
     const scalar zBottom =
         planeHeight(control, bedCaseWriter::bedBottomObject);
     const scalar zTop = planeHeight(control, bedCaseWriter::bedTopObject);
+    zBottom_ = zBottom;
     length_ = zTop - zBottom;
     if (!(length_ > 0))
     {
@@ -246,20 +265,208 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::rbd::pressureDropComparison::ergun() const
+Foam::scalar Foam::rbd::pressureDropComparison::ergun(const scalar eps) const
 {
     // Kinematic form: mu = nu, rho = 1
-    return correlations::ergun(nu_, 1, velocity_, porosity_, pelletDiameter_);
+    return correlations::ergun(nu_, 1, velocity_, eps, pelletDiameter_);
+}
+
+
+Foam::scalar Foam::rbd::pressureDropComparison::eisfeldSchnitzlein
+(
+    const scalar eps
+) const
+{
+    return correlations::eisfeldSchnitzlein
+    (
+        nu_, 1, velocity_, eps, pelletDiameter_, tubeDiameter_,
+        esShape(shape_)
+    );
+}
+
+
+Foam::scalar Foam::rbd::pressureDropComparison::ergun() const
+{
+    return ergun(porosity_);
 }
 
 
 Foam::scalar Foam::rbd::pressureDropComparison::eisfeldSchnitzlein() const
 {
-    return correlations::eisfeldSchnitzlein
-    (
-        nu_, 1, velocity_, porosity_, pelletDiameter_, tubeDiameter_,
-        esShape(shape_)
-    );
+    return eisfeldSchnitzlein(porosity_);
+}
+
+
+bool Foam::rbd::pressureDropComparison::hasPackedSection() const
+{
+    // A slab reaching the top plane is the whole bed again
+    return
+        porosityHeight_ > 0
+     && porosityHeight_ < length_*(1 - 1e-6)
+     && bulkPorosity_ > 0 && bulkPorosity_ < 1;
+}
+
+
+Foam::scalar Foam::rbd::pressureDropComparison::packedTopHeight() const
+{
+    return zBottom_ + porosityHeight_;
+}
+
+
+void Foam::rbd::pressureDropComparison::setPackedTopPressure(const scalar p)
+{
+    if (!hasPackedSection())
+    {
+        FatalErrorInFunction
+            << "The summary of " << caseDir_ << " gives no packed section"
+            << " below the bed top (porosityHeight " << porosityHeight_
+            << " m, bulkPorosity " << bulkPorosity_ << ", planes "
+            << length_ << " m apart)" << exit(FatalError);
+    }
+    pPackedTop_ = p;
+    const scalar s = packedSimulated();
+    if (!(std::isfinite(s) && s > 0))
+    {
+        FatalErrorInFunction
+            << "The simulated pressure drop over the packed section ("
+            << pBottom_ << " - " << p << ")/" << porosityHeight_ << " = "
+            << s << " m/s^2 (kinematic) is not a positive number: has"
+            << " simpleFoam converged?" << exit(FatalError);
+    }
+}
+
+
+bool Foam::rbd::pressureDropComparison::packedMeasured() const
+{
+    return std::isfinite(pPackedTop_);
+}
+
+
+Foam::scalar Foam::rbd::pressureDropComparison::packedSimulated() const
+{
+    return (pBottom_ - pPackedTop_)/porosityHeight_;
+}
+
+
+Foam::scalar Foam::rbd::pressureDropComparison::packedErgun() const
+{
+    return ergun(bulkPorosity_);
+}
+
+
+Foam::scalar
+Foam::rbd::pressureDropComparison::packedEisfeldSchnitzlein() const
+{
+    return eisfeldSchnitzlein(bulkPorosity_);
+}
+
+
+Foam::stringList Foam::rbd::pressureDropComparison::outside
+(
+    const word& correlation,
+    const scalar eps
+) const
+{
+    const bool isErgun = correlation == "ergun";
+    const correlations::pressureDropRange range =
+        isErgun
+      ? correlations::ergunRange()
+      : correlations::eisfeldSchnitzleinRange();
+
+    // Numbers as a message prints them (6 significant digits)
+    const auto num = [](const scalar x) { return std::string(name(x)); };
+    const auto bounds = [&num](const scalar lo, const scalar hi)
+    {
+        return hi < 0.1*GREAT
+          ? "[" + num(lo) + ", " + num(hi) + "]"
+          : ">= " + num(lo);
+    };
+
+    DynamicList<string> why;
+    const scalar Re =
+        range.modifiedRe ? reynoldsNumber()/(1 - eps) : reynoldsNumber();
+    const std::string ReName = range.modifiedRe ? "Re_p/(1 - eps)" : "Re_p";
+    if (Re < range.ReMin || Re > range.ReMax)
+    {
+        why.append
+        (
+            ReName + " = " + num(Re) + " not in "
+          + bounds(range.ReMin, range.ReMax)
+        );
+    }
+    const scalar Nv = volumeEquivalentDiameterRatio();
+    if (Nv < range.NvMin || Nv > range.NvMax)
+    {
+        why.append
+        (
+            "Nv = dt/dpv = " + num(Nv) + " not "
+          + (range.NvMax < 0.1*GREAT ? "in " : "")
+          + bounds(range.NvMin, range.NvMax)
+          + (isErgun ? " (no wall correction)" : "")
+        );
+    }
+    if (eps < range.epsMin || eps > range.epsMax)
+    {
+        why.append
+        (
+            "porosity " + num(eps) + " not in "
+          + bounds(range.epsMin, range.epsMax)
+        );
+    }
+    if (!range.shapes.found(pelletShape_))
+    {
+        why.append
+        (
+            "shape " + pelletShape_ + ", fitted for "
+          + inWords(range.shapes) + " pellets"
+        );
+    }
+    else if (!isErgun && shape_ != pelletShape_ + "s")
+    {
+        why.append
+        (
+            "the constants of " + shape_ + " for " + pelletShape_
+          + " pellets"
+        );
+    }
+    return stringList(std::move(why));
+}
+
+
+Foam::stringList Foam::rbd::pressureDropComparison::outsideRange
+(
+    const word& correlation
+) const
+{
+    return outside(correlation, porosity_);
+}
+
+
+Foam::dictionary Foam::rbd::pressureDropComparison::sectionResults
+(
+    const scalar eps,
+    const scalar zTop,
+    const scalar pTop
+) const
+{
+    const scalar L = zTop - zBottom_;
+    const scalar sim = (pBottom_ - pTop)/L;
+    dictionary d;
+    d.add("porosity", eps);
+    d.add("zBottom", zBottom_);
+    d.add("zTop", zTop);
+    d.add("pTop", pTop);
+    d.add("dPdLSimulated", sim);
+    d.add("dPdLErgun", ergun(eps));
+    d.add("dPdLEisfeldSchnitzlein", eisfeldSchnitzlein(eps));
+    d.add("ratioErgun", sim/ergun(eps));
+    d.add("ratioEisfeldSchnitzlein", sim/eisfeldSchnitzlein(eps));
+    for (const word c : {"ergun", "eisfeldSchnitzlein"})
+    {
+        const stringList why(outside(c, eps));
+        d.add(word(c + "InRange"), Switch(why.empty()));
+    }
+    return d;
 }
 
 
@@ -287,26 +494,112 @@ Foam::dictionary Foam::rbd::pressureDropComparison::results() const
         d.add("rho", rho_);
         d.add("dPdLSimulatedPa", rho_*simulated());
     }
+    d.add("pelletDiameter", boundingDiameter_);
+    d.add("diameterRatio", diameterRatio());
+    d.add("volumeEquivalentDiameterRatio", volumeEquivalentDiameterRatio());
+    if (packedMeasured())
+    {
+        d.add
+        (
+            "packedSection",
+            sectionResults(bulkPorosity_, packedTopHeight(), pPackedTop_)
+        );
+    }
+    // The whole bed's verdicts, with the reasons
+    dictionary ranges;
+    for (const word c : {"ergun", "eisfeldSchnitzlein"})
+    {
+        const stringList why(outside(c, porosity_));
+        dictionary r;
+        r.add("inRange", Switch(why.empty()));
+        if (!why.empty())
+        {
+            r.add("outside", why);
+        }
+        ranges.add(c, r);
+    }
+    d.add("ranges", ranges);
     return d;
+}
+
+
+void Foam::rbd::pressureDropComparison::reportSection
+(
+    Ostream& os,
+    const char* title,
+    const char* porosityName,
+    const scalar eps,
+    const scalar zTop,
+    const scalar pTop
+) const
+{
+    const scalar sim = (pBottom_ - pTop)/(zTop - zBottom_);
+    os  << "    " << title << ", z from " << zBottom_ << " to " << zTop
+        << " m (L = " << zTop - zBottom_ << " m), porosity " << eps
+        << " (" << porosityName << ")" << nl
+        << "        dP/(rho L) [m/s^2]" << nl
+        << "        simulated             " << sim << nl
+        << "        Ergun                 " << ergun(eps)
+        << "  (simulated/Ergun " << sim/ergun(eps) << ")" << nl
+        << "        Eisfeld-Schnitzlein   " << eisfeldSchnitzlein(eps)
+        << "  (simulated/E-S " << sim/eisfeldSchnitzlein(eps) << ")" << nl;
+    if (rho_ > 0)
+    {
+        os  << "        dP/L simulated [Pa/m] " << rho_*sim << nl;
+    }
 }
 
 
 void Foam::rbd::pressureDropComparison::report(Ostream& os) const
 {
-    os  << "Pressure drop over the packed section (" << shape_
-        << ", porosity " << porosity_ << ", L = " << length_ << " m,"
-        << " U = " << velocity_ << " m/s, Re_p = " << reynoldsNumber()
-        << ")" << nl
-        << "    dP/(rho L) [m/s^2]" << nl
-        << "        simulated             " << simulated() << nl
-        << "        Ergun                 " << ergun()
-        << "  (simulated/Ergun " << simulated()/ergun() << ")" << nl
-        << "        Eisfeld-Schnitzlein   " << eisfeldSchnitzlein()
-        << "  (simulated/E-S " << simulated()/eisfeldSchnitzlein() << ")"
-        << nl;
-    if (rho_ > 0)
+    os  << "Pressure drop (" << pelletShape_ << " pellets, Eisfeld-"
+        << "Schnitzlein constants of " << shape_ << "; U = " << velocity_
+        << " m/s, Re_p = U dpv/nu = " << reynoldsNumber()
+        << ", N = dt/dp = " << diameterRatio() << ", Nv = dt/dpv = "
+        << volumeEquivalentDiameterRatio() << ")" << nl;
+    if (packedMeasured())
     {
-        os  << "    dP/L simulated [Pa/m]     " << rho_*simulated() << nl;
+        reportSection
+        (
+            os, "Packed section, without the loose top layer",
+            "bulkPorosity of the summary, below porosityHeight",
+            bulkPorosity_, packedTopHeight(), pPackedTop_
+        );
+    }
+    else if (hasPackedSection())
+    {
+        os  << "    Packed section: not measured (the pressure on its top"
+            << " plane z = " << packedTopHeight() << " m was not sampled)"
+            << nl;
+    }
+    reportSection
+    (
+        os, "Whole bed, floor to the top of the highest pellet",
+        "bedPorosity of the summary", porosity_, zBottom_ + length_, pTop_
+    );
+
+    // The verdicts at the porosity of the section given first
+    const scalar eps = packedMeasured() ? bulkPorosity_ : porosity_;
+    os  << "    Ranges of the correlations at porosity " << eps
+        << " (recalled from the papers: correlations.H)" << nl;
+    for (const word c : {"ergun", "eisfeldSchnitzlein"})
+    {
+        const char* name = c == "ergun" ? "Ergun" : "Eisfeld-Schnitzlein";
+        const stringList why(outside(c, eps));
+        os  << "        " << name << ": ";
+        if (why.empty())
+        {
+            os  << "inside its range" << nl;
+        }
+        else
+        {
+            os  << "OUTSIDE its range: ";
+            forAll(why, i)
+            {
+                os  << (i ? "; " : "") << why[i].c_str();
+            }
+            os  << nl;
+        }
     }
 }
 
