@@ -122,7 +122,7 @@ foamDictionary "$tmp/short/system/packingDict" -entry simulation/endTime -set 0.
 rbdPackBed -case "$tmp/short" > "$tmp/short.log" 2>&1
 rc=$?
 check "endTime below settleTime: exit $unsettledStatus (not settled), the outputs and a warning" \
-    "[ $rc -eq $unsettledStatus ] && [ -s $tmp/short/postProcessing/rbdPackBed/pellets.csv ] && grep -q 'settleTime 0.5 s is longer than endTime 0.3 s: the run cannot settle' $tmp/short.log"
+    "[ $rc -eq $unsettledStatus ] && grep -q 'Not settled by endTime' $tmp/short.log && [ -s $tmp/short/postProcessing/rbdPackBed/pellets.csv ] && grep -q 'settleTime 0.5 s is longer than endTime 0.3 s: the run cannot settle' $tmp/short.log"
 
 # An entry of a block written at the top level: read by no one, said so
 cp -r "$here/cases/smallSpheres" "$tmp/top"
