@@ -283,7 +283,8 @@ Foam::rbd::bedCaseSettings::bedCaseSettings
                     << e.first << " in " << options.name()
                     << " is ignored: contactTreatment is "
                     << contactTreatment_ << " (" << e.first
-                    << " is for " << e.second << ")" << endl;
+                    << " is for " << inWords(e.second).c_str() << ")"
+                    << endl;
             }
         }
     }

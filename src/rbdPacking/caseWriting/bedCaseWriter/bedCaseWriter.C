@@ -922,9 +922,14 @@ Foam::fileNameList Foam::rbd::bedCaseWriter::write
 
     if (kept.size())
     {
+        string names;
+        for (const fileName& f : kept)
+        {
+            names += (names.empty() ? "" : " ") + f;
+        }
         WarningInFunction
             << "Kept files that the case already has (overwrite is off):"
-            << nl << "    " << kept << nl
+            << nl << "    " << names.c_str() << nl
             << "    they may not fit this bed (e.g. locationInMesh)" << endl;
     }
     if (!isFile(caseDir_/"constant/triSurface"/pelletFile))
