@@ -15,7 +15,7 @@ using Foam::constant::mathematical::pi;
 
 const Foam::wordList Foam::rbd::loadingScheme::schemes
 ({
-    "column", "twoColumns", "fourColumns"
+    "column", "twoColumns", "fourColumns", "layers"
 });
 
 
@@ -93,11 +93,21 @@ Foam::rbd::loadingScheme::loadingScheme
         );
     }
 
-    if (scheme_ == "column" && dict.found("columnOffset"))
+    if
+    (
+        (scheme_ == "column" || scheme_ == "layers")
+     && dict.found("columnOffset")
+    )
     {
         WarningInFunction
             << "columnOffset in " << dict.name() << " is ignored: the "
-            << "column scheme releases on the tube axis" << endl;
+            << scheme_ << " scheme "
+            << (
+                   scheme_ == "column"
+                 ? "releases on the tube axis"
+                 : "releases over the whole cross-section"
+               )
+            << endl;
     }
 
     const scalar s = columnOffset_;
@@ -105,6 +115,10 @@ Foam::rbd::loadingScheme::loadingScheme
     if (scheme_ == "column")
     {
         columns_ = pointField({point(0, 0, z)});
+    }
+    else if (scheme_ == "layers")
+    {
+        columns_ = layerPoints(clearance(), R_ - rb_, z);
     }
     else if (scheme_ == "twoColumns")
     {
@@ -121,6 +135,51 @@ Foam::rbd::loadingScheme::loadingScheme
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::pointField Foam::rbd::loadingScheme::layerPoints
+(
+    const scalar pitch,
+    const scalar rhoMax,
+    const scalar z
+)
+{
+    // Hexagonal lattice through the axis, rows along x; the points within
+    // rhoMax, sorted by distance from the axis and then by angle, so that
+    // the order (and with it the packing) is the same on every machine
+    DynamicList<point> pts;
+    const scalar rowPitch = pitch*Foam::sqrt(3.0)/2;
+    const label nRows = label(std::floor(rhoMax/rowPitch + 1e-9));
+    const label nCols = label(std::floor(rhoMax/pitch + 1e-9)) + 1;
+    for (label j = -nRows; j <= nRows; ++j)
+    {
+        const scalar y = j*rowPitch;
+        const scalar shift = (j % 2 == 0) ? 0 : 0.5*pitch;
+        for (label i = -nCols - 1; i <= nCols; ++i)
+        {
+            const scalar x = i*pitch + shift;
+            if (Foam::sqrt(sqr(x) + sqr(y)) <= rhoMax*(1 + 1e-12))
+            {
+                pts.append(point(x, y, z));
+            }
+        }
+    }
+    std::stable_sort
+    (
+        pts.begin(), pts.end(),
+        [](const point& a, const point& b)
+        {
+            const scalar ra = sqr(a.x()) + sqr(a.y());
+            const scalar rb = sqr(b.x()) + sqr(b.y());
+            if (Foam::mag(ra - rb) > 1e-18)
+            {
+                return ra < rb;
+            }
+            return std::atan2(a.y(), a.x()) < std::atan2(b.y(), b.x());
+        }
+    );
+    return pointField(std::move(pts));
+}
+
 
 void Foam::rbd::loadingScheme::nextPose
 (
