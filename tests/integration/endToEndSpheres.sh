@@ -13,23 +13,44 @@
 #     decomposePar, mpirun -np 2 simpleFoam -parallel -dry-run
 #                                       (the decomposition of Allrun-parallel)
 #     simpleFoam                        'SIMPLE solution converged', no NaN
-#     rbdPressureDrop                   simulated dP/L over the packed section
-#                                       within 35 % of Eisfeld-Schnitzlein
-#                                       for the bed's own porosity
+#     rbdPressureDrop                   simulated dP/(rho L) over the whole
+#                                       bed, floor to top, within 2 % of
+#                                       the value this case gave (below)
 # Prints the time of every step. Runs in a temporary directory, removed on
 # success, kept (and named) on failure. About 1 minute on this machine.
 #
-# The porosity is that of the whole bed, floor to top of the highest pellet
-# (the section the pressure is sampled over). Beds this short scatter:
-# 22-34 spheres, seeds 1-3, gave simulated/Eisfeld-Schnitzlein 1.09-1.36
-# (this case, 30 spheres seed 1: 1.09). The 35 % of the issue is kept.
+# A regression value at a fixed seed. The packing is deterministic (goodRun:
+# same seed, same pellets.csv bit for bit), so first the bed is checked to
+# be the recorded one (bedHeight, bedPorosity to 1e-4); a change of the
+# packing makes another bed, and the value no longer applies (beds this
+# short scatter: 22-34 spheres, seeds 1-3, gave simulated/Eisfeld-
+# Schnitzlein 1.09-1.36, so no correlation can be held to 10 %).
+# Then the pressure drop of that bed, recorded 2026-11 with Debian's
+# OpenFOAM v1912, serial snappyHexMesh and simpleFoam (96971 cells,
+# converged in 75 iterations): dP/(rho L) = 0.0693194 m/s^2
+# (simulated/Eisfeld-Schnitzlein 0.975). What moves it without a fault:
+#     the same case again (4 runs)              identical to 12 digits
+#     residualControl p 1e-6, U 1e-7 (114 it.)  +0.0002 %
+#     pellets.stl shifted 20 um in x            -0.06 %  (snappyHexMesh
+#     pellets.stl shifted 100 um in x           -0.37 %   cuts other cells;
+#                                                         finest cell 625 um)
+# The 2 % allowed is five times the largest of these, and a sixth of the
+# seed-to-seed scatter; a 10 % error of the inlet velocity (simulated/E-S
+# unchanged, as E-S uses the measured flow rate) fails it.
+# When the packing or the CFD case changes on purpose, rerun, check that
+# simulated/E-S stays near 1, and record the new values below.
 #
 # Usage: bash tests/integration/endToEndSpheres.sh    (after etc/bashrc)
 #------------------------------------------------------------------------------
 set -u
 
 here="$(cd "$(dirname "$0")" && pwd)"
-maxDeviation=0.35
+
+# The recorded bed (seed 1) and its pressure drop (see above)
+refBedHeight=0.0286559      # [m]
+refBedPorosity=0.56379      # [-]
+refDPdL=0.0693194           # [m/s^2] dP/(rho L), floor to top of the bed
+maxDeviation=0.02           # [-] relative, on refDPdL
 
 for app in rbdPackBed rbdPressureDrop blockMesh snappyHexMesh simpleFoam
 do
@@ -77,6 +98,17 @@ run rbdPackBed rbdPackBed
 grep -E '^(pellets|bedHeight|bulkPorosity|bedPorosity) ' \
     postProcessing/rbdPackBed/summary | sed 's/^/    /'
 
+# within: VALUE REFERENCE RELATIVE-TOLERANCE
+within() { awk -v v="$1" -v r="$2" -v t="$3" \
+               'BEGIN {exit !(v != "" && v - r <= t*r && r - v <= t*r)}'; }
+h="$(foamDictionary -entry bedHeight -value postProcessing/rbdPackBed/summary 2>/dev/null)"
+e="$(foamDictionary -entry bedPorosity -value postProcessing/rbdPackBed/summary 2>/dev/null)"
+within "$h" $refBedHeight 1e-4 && within "$e" $refBedPorosity 1e-4 \
+    || fail "not the recorded bed: bedHeight ${h:-?} m, bedPorosity ${e:-?}" \
+            "(recorded $refBedHeight m, $refBedPorosity); the packing of" \
+            "seed 1 changed, and the regression value of the pressure drop" \
+            "with it: see the header of $0"
+
 for f in system/blockMeshDict system/surfaceFeatureExtractDict \
          system/snappyHexMeshDict system/decomposeParDict \
          system/controlDict system/fvSchemes system/fvSolution \
@@ -120,14 +152,16 @@ grep 'SIMPLE solution converged' log.simpleFoam | sed 's/^/    /'
 run rbdPressureDrop rbdPressureDrop
 sed -n '/^Pressure drop/,/E-S/p' log.rbdPressureDrop
 
+dPdL="$(foamDictionary -entry dPdLSimulated -value \
+        postProcessing/pressureDrop/comparison 2>/dev/null)"
 ratio="$(foamDictionary -entry ratioEisfeldSchnitzlein -value \
          postProcessing/pressureDrop/comparison 2>/dev/null)"
-[ -n "$ratio" ] || fail "no ratioEisfeldSchnitzlein in the comparison"
-awk -v r="$ratio" -v m="$maxDeviation" \
-    'BEGIN {exit !(r >= 1 - m && r <= 1 + m)}' \
-    || fail "simulated/Eisfeld-Schnitzlein = $ratio, not within" \
-            "$maxDeviation of 1"
-echo "    simulated/Eisfeld-Schnitzlein = $ratio (allowed 1 +- $maxDeviation)"
+[ -n "$dPdL" ] || fail "no dPdLSimulated in the comparison"
+within "$dPdL" $refDPdL $maxDeviation \
+    || fail "simulated dP/(rho L) = $dPdL m/s^2, not within" \
+            "$maxDeviation of the recorded $refDPdL (simulated/E-S ${ratio:-?})"
+echo "    simulated dP/(rho L) = $dPdL m/s^2 (recorded $refDPdL," \
+     "allowed +- $maxDeviation relative); simulated/E-S = ${ratio:-?}"
 
 awk -v t="$total $(date +%s.%N)" 'BEGIN {split(t, a, " ");
     printf "    %-26s %6.1f s\n", "total", a[2] - a[1]}'
