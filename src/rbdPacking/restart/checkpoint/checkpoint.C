@@ -26,7 +26,7 @@ namespace
 
 const Foam::wordList Foam::rbd::checkpoint::resumableEntries
 ({
-    "endTime", "checkpointInterval", "logInterval"
+    "endTime", "checkpointInterval", "logInterval", "writeInterval"
 });
 
 const Foam::wordList Foam::rbd::checkpoint::resumableBlocks
@@ -209,7 +209,8 @@ void Foam::rbd::checkpoint::read
             << " the dictionary the checkpoint " << file.c_str()
             << " was written with." << nl
             << "    A resumed run may change only simulation/"
-            << "{endTime, checkpointInterval, logInterval} and the cfdCase "
+            << "{endTime, checkpointInterval, logInterval, writeInterval} "
+            << "and the cfdCase "
             << "block; run without -resume to pack anew."
             << exit(FatalIOError);
     };

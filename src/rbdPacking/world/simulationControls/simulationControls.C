@@ -28,6 +28,7 @@ const Foam::wordList Foam::rbd::simulationControls::knownEntries
     "restitutionSweeps", "maxSweeps", "collisionTolerance",
     "sleepVelocity", "sleepTime", "wakeVelocity",
     "settleTime", "settleEnergy", "logInterval", "checkpointInterval",
+    "writeInterval",
     "lcpSolver", "restingCompliance", "contactModel", "restingFriction",
     "preset"
 });
@@ -160,6 +161,7 @@ Foam::rbd::simulationControls::simulationControls
     (
         getNonNegativeOrDefault(d, "checkpointInterval", 300, "s")
     ),
+    writeInterval(getNonNegativeOrDefault(d, "writeInterval", 0, "s")),
     restingCompliance(getInRangeOrDefault(d, "restingCompliance", 1e-5, 0,
         0.01, "-")),
     contactModel
@@ -245,6 +247,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("settleEnergy", settleEnergy);
     os.writeEntry("logInterval", logInterval);
     os.writeEntry("checkpointInterval", checkpointInterval);
+    os.writeEntry("writeInterval", writeInterval);
     os.writeEntry("restingCompliance", restingCompliance);
     os.writeEntry("contactModel", contactModel);
     os.writeEntry("restingFriction", restingFriction);
