@@ -176,6 +176,8 @@ int main(int argc, char *argv[])
             text << "#inputMode error " << file.rdbuf();
             IStringStream is(text.str());
             is.name() = dictIO.objectPath();
+            // (a string stream counts from 0; the file's first line is 1)
+            is.lineNumber() = 1;
             const dictionary check(is);
             entry::resetInputMode();
         }
