@@ -1,0 +1,164 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# The loading schemes twoColumns and fourColumns and the loading entries
+# tilt, angleDisturbance, positionDisturbance and columnOffset, through
+# rbdPackBed (loading.cases: one test per case, from cases/loading).
+#
+# Release cases: a run of 0.02 s with one pellet per column, all released at
+# t = 0 and still falling freely at its end, so pellets.csv holds the
+# release poses: (x, y) the column points (s, 0), (0, s), (-s, 0), (0, -s)
+# (four columns) or (s, 0), (-s, 0) (two), s = columnOffset, default
+# (R - r_b)/2; z = releaseHeight - g t^2/2; the body axis tilted by 'tilt'
+# about the world x axis, q = (cos(tilt/2), sin(tilt/2), 0, 0), or within
+# angleDisturbance of that; offsets within positionDisturbance dp.
+#
+# Packing cases: the whole run, twice: settled, every vertex of pellets.stl
+# in the tube, largest overlap below 0.5 % dp, the same pellets.csv from the
+# same dictionary and seed (bit for bit), another seed another bed.
+#
+# Usage: bash tests/integration/loading.sh <case>    (after etc/bashrc)
+#------------------------------------------------------------------------------
+set -u
+here="$(cd "$(dirname "$0")" && pwd)"
+. "$here/lib/checks.sh"
+
+case="${1:?usage: loading.sh <case of loading.cases>}"
+grep -Eq "^$case( |$)" "$here/loading.cases" \
+    || { echo "loading.sh: no case '$case' in loading.cases" 1>&2; exit 1; }
+
+R=0.025
+dp=0.01
+rb="$(awk 'BEGIN {printf "%.12g", sqrt(2)*0.005}')"
+g=9.81
+
+# a <= b, numerically
+le() { awk -v a="$1" -v b="$2" 'BEGIN {exit !(a <= b)}'; }
+
+# setup <dir> <entry value>...: the case with these entries set
+setup()
+{
+    local d="$1"
+    shift
+    cp -r "$here/cases/loading" "$d"
+    while [ $# -gt 1 ]
+    do
+        foamDictionary "$d/system/packingDict" -entry "$1" -set "$2" \
+            > /dev/null || exit 1
+        shift 2
+    done
+}
+
+# pack <dir> [options]: run, log to <dir>.log, print the wall time
+pack()
+{
+    local d="$1"
+    shift
+    local start=$(date +%s.%N)
+    rbdPackBed -case "$d" "$@" > "$d.log" 2>&1
+    local status=$?
+    awk -v t="$start $(date +%s.%N)" \
+        'BEGIN {split(t, a, " "); printf "%.1f s\n", a[2] - a[1]}' \
+        > "$d.time"
+    return $status
+}
+
+get() { foamDictionary -entry "$2" -value "$1/postProcessing/rbdPackBed/summary" 2>/dev/null; }
+
+# release <dir> <scheme> <columns>: the short run and the checks every
+# release case shares; the column offset it finds is in $s
+release()
+{
+    local d="$1" scheme="$2" nc="$3"
+    foamDictionary "$d/system/packingDict" -entry pellets/number -set "$nc" > /dev/null
+    foamDictionary "$d/system/packingDict" -entry simulation/deltaT -set 0.001 > /dev/null
+    foamDictionary "$d/system/packingDict" -entry simulation/endTime -set 0.02 > /dev/null
+    foamDictionary "$d/system/packingDict" -entry loading/releaseHeight -set 0.05 > /dev/null
+    foamDictionary "$d/system/packingDict" -entry loading/scheme -set "$scheme" > /dev/null
+    pack "$d" -acceptStatus
+    check "$scheme: the short run exits 0 with -acceptStatus ($(cat $d.time))" "[ $? -eq 0 ]"
+    csv="$d/postProcessing/rbdPackBed/pellets.csv"
+    check "$scheme: $nc pellets released, one per column" \
+        "[ \$(tail -n +2 $csv 2>/dev/null | wc -l) -eq $nc ]"
+    # The simulated time, and every pellet still at z = releaseHeight - g t^2/2
+    t="$(get "$d" simulatedTime)"
+    check "$scheme: simulated $t s, every pellet in free fall from 0.05 m" \
+        "awk -F, -v t=$t -v g=$g 'NR > 1 {z = 0.05 - 0.5*g*t*t; if ((\$5 - z)^2 > 1e-18) bad = 1} END {exit bad || t < 0.019}' $csv"
+    # The column offset the log echoes
+    s="$(awk '$1 == "columnOffset" {sub(";", "", $2); print $2; exit}' $d.log)"
+}
+
+case "$case" in
+fourColumnsRelease)
+    setup "$tmp/a" loading/columnOffset 0.012 loading/tilt 30
+    release "$tmp/a" fourColumns 4
+    check "log echoes columnOffset 0.012" "[ \"$s\" = 0.012 ]"
+    # Each column point (s, 0), (0, s), (-s, 0), (0, -s) holds one pellet,
+    # to round-off
+    for p in "0.012 0" "0 0.012" "-0.012 0" "0 -0.012"
+    do
+        check "one pellet at (x y) = ($p)" \
+            "[ \$(awk -F, -v p='$p' 'BEGIN {split(p, c, \" \")} NR > 1 && (\$3 - c[1])^2 + (\$4 - c[2])^2 < 1e-24' $csv | wc -l) -eq 1 ]"
+    done
+    # Tilt 30 about world x: q = (cos 15, sin 15, 0, 0)
+    check "every axis tilted by 30 degrees about world x" \
+        "awk -F, 'NR > 1 {pi = atan2(0, -1); w = cos(pi/12); a = sin(pi/12); if ((\$6 - w)^2 + (\$7 - a)^2 + \$8^2 + \$9^2 > 1e-20) bad = 1} END {exit bad}' $csv"
+    ;;
+
+twoColumnsRelease)
+    setup "$tmp/a" loading/tilt 60 loading/positionDisturbance 0.3 \
+        loading/angleDisturbance 20 loading/seed 3
+    release "$tmp/a" twoColumns 2
+    s0="$(awk -v R=$R -v r=$rb 'BEGIN {printf "%.6g", (R - r)/2}')"
+    check "default columnOffset $s = (R - r_b)/2 = $s0" \
+        "awk -v a=$s -v b=$s0 'BEGIN {exit !((a - b)^2 < 1e-18)}'"
+    # Pellet k from column k: (s, 0) then (-s, 0); within 0.3 dp of it,
+    # and moved from it (the disturbance is drawn)
+    check "pellets within positionDisturbance 0.3 dp of (s, 0) and (-s, 0), and off them" \
+        "awk -F, -v s=$s -v d=$dp 'NR > 1 {cx = (NR == 2 ? s : -s); r = sqrt((\$3 - cx)^2 + \$4^2); if (r > 0.3*d*(1 + 1e-9)) bad = 1; if (r > 1e-6*d) moved++} END {exit bad || moved != 2}' $csv"
+    # Angle between q and q0 = (cos 30, sin 30, 0, 0) (tilt 60):
+    # 2 acos|q . q0| <= 20 degrees, and not 0
+    check "orientations within angleDisturbance 20 degrees of the 60 degree tilt, and off it" \
+        "awk -F, 'NR > 1 {pi = atan2(0, -1); d = \$6*cos(pi/6) + \$7*sin(pi/6); if (d < 0) d = -d; if (d > 1) d = 1; a = 2*atan2(sqrt(1 - d*d), d)*180/pi; print \"    angle to the tilted pose \" a \" deg\" > \"/dev/stderr\"; if (a > 20 + 1e-9) bad = 1; if (a > 1e-6) moved++} END {exit bad || moved != 2}' $csv"
+    # Same dictionary and seed: the same poses; another seed: others
+    cp -r "$here/cases/loading" "$tmp/b"
+    cp "$tmp/a/system/packingDict" "$tmp/b/system/packingDict"
+    pack "$tmp/b" -acceptStatus
+    check "same dictionary and seed: the same pellets.csv" \
+        "cmp -s $csv $tmp/b/postProcessing/rbdPackBed/pellets.csv"
+    cp -r "$here/cases/loading" "$tmp/c"
+    cp "$tmp/a/system/packingDict" "$tmp/c/system/packingDict"
+    foamDictionary "$tmp/c/system/packingDict" -entry loading/seed -set 4 > /dev/null
+    pack "$tmp/c" -acceptStatus
+    check "another seed: other poses" \
+        "[ -s $tmp/c/postProcessing/rbdPackBed/pellets.csv ] && ! cmp -s $csv $tmp/c/postProcessing/rbdPackBed/pellets.csv"
+    ;;
+
+twoColumnsPack|fourColumnsPack)
+    if [ "$case" = twoColumnsPack ]
+    then
+        entries="loading/scheme twoColumns loading/columnOffset 0.006 loading/tilt 60 loading/angleDisturbance 30"
+    else
+        entries="loading/scheme fourColumns loading/tilt 10 loading/angleDisturbance 45 loading/positionDisturbance 0.2"
+    fi
+    setup "$tmp/a" $entries
+    setup "$tmp/b" $entries
+    pack "$tmp/a"
+    check "exit status 0 ($(cat $tmp/a.time))" "[ $? -eq 0 ]"
+    check "status settled, all 8 pellets" \
+        "[ \"$(get $tmp/a status)\" = settled ] && [ \"$(get $tmp/a pellets)\" = 8 ]"
+    ov="$(get $tmp/a maxOverlap)"
+    check "largest overlap $ov m below 0.5 % of dp" "le ${ov:-1} 5e-5"
+    awk -F, -f "$here/lib/bedGeometry.awk" \
+        "$tmp/a/postProcessing/rbdPackBed/pellets.csv" \
+        "$tmp/a/constant/triSurface/pellets.stl" > "$tmp/geometry" 2>/dev/null
+    geo() { awk -v k="$1" '$1 == k {print $2}' "$tmp/geometry"; }
+    check "every vertex inside the tube (largest radius $(geo maxRho) m) and above the floor (lowest $(geo minZ) m), to 0.1 % dp" \
+        "[ \"$(geo pellets)\" = 8 ] && le $(geo maxRho) 0.02501 && le -1e-5 $(geo minZ)"
+    pack "$tmp/b"
+    check "same dictionary and seed: the same pellets.csv ($(cat $tmp/b.time))" \
+        "cmp -s $tmp/a/postProcessing/rbdPackBed/pellets.csv $tmp/b/postProcessing/rbdPackBed/pellets.csv"
+    echo "loading.$case: wall $(cat $tmp/a.time), cpu $(get $tmp/a cpuTime) s, bulkPorosity $(get $tmp/a bulkPorosity), maxOverlap $ov m"
+    ;;
+esac
+
+exit $fail
