@@ -56,6 +56,9 @@ randomByDefault)
     rbdPackBed -case "$tmp/a" > "$tmp/a.log" 2>&1; rc=$?
     check "defaults: exit 0, status settled" \
         "[ $rc -eq 0 ] && [ \"\$(status $tmp/a)\" = settled ]"
+    ro="$(foamDictionary -entry releaseOverlap -value "$tmp/a/$out/summary" 2>/dev/null)"
+    check "defaults: no pellet released into another (releaseOverlap $ro)" \
+        "[ \"$ro\" = 0 ]"
     check "defaults: positionDisturbance 0.3 echoed" \
         "grep -Eq '^ *positionDisturbance +0.3;' $tmp/a.log"
     # 60 spheres of 3 mm spread over the floor of a 25 mm tube: a few
@@ -78,6 +81,11 @@ incomplete)
     check "incomplete: the log names the release height and what to change" \
         "grep -q 'pellets were placed: the bed reached the release height' $tmp/a.log && grep -q 'container/height' $tmp/a.log"
     check "incomplete: no CFD case" "noCase $tmp/a"
+    # The bed reached the release points: every pellet there, old ones
+    # included, keeps the next one out
+    ro="$(foamDictionary -entry releaseOverlap -value "$tmp/a/$out/summary" 2>/dev/null)"
+    check "incomplete: no pellet released into another (releaseOverlap $ro)" \
+        "[ \"$ro\" = 0 ]"
     ;;
 
 notSettled)

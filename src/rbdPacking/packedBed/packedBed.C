@@ -427,22 +427,27 @@ void Foam::rbd::packedBed::releasePellets()
         quaternion q;
         loading_->nextPose(c, x, q);
 
-        // Nothing else may overlap the release point: the recent pellets
-        // are the only ones up there
-        bool free = true;
-        const label first = max(0, bodies.size() - 8*loading_->nColumns());
-        for (label i = first; i < bodies.size(); ++i)
+        // Nothing may overlap the release point, nor come within the band
+        // of it: every pellet is tested (a bed that reaches the release
+        // height brings old pellets up there), by bounding spheres, so a
+        // pellet is never released into another
+        scalar gap = GREAT;
+        for (const rigidBody& b : bodies)
         {
-            if (mag(bodies[i].x() - x) < 2*rb + world_->band())
-            {
-                free = false;
-                break;
-            }
+            gap = min(gap, mag(b.x() - x) - 2*rb);
         }
-        if (!free)
+        if (gap < world_->band())
         {
             continue;
         }
+
+        // The release's clearance of the container (the loading keeps the
+        // centre within R - r_b and above r_b): recorded, as the largest
+        // interpenetration at release (bounding spheres: for other shapes
+        // an upper bound of the true one), for the summary
+        gap = min(gap, tube_.radius() - rb - tube::axialDistance(x));
+        gap = min(gap, x.z() - rb);
+        state_.releaseOverlap = max(state_.releaseOverlap, -gap);
 
         lastOfColumn[c] = world_->addBody(x, q);
         ++state_.released;
@@ -469,7 +474,8 @@ void Foam::rbd::packedBed::writeCheckpoint
             out.put(state_.released).put(state_.quietTime)
                .put(state_.nextLog).put(state_.lastRelease)
                .put(state_.warnedStall).put(state_.wallTime + wallTime)
-               .put(state_.cpuTime + cpuTime);
+               .put(state_.cpuTime + cpuTime)
+               .put(state_.releaseOverlap);
         }
     );
     Info<< "Checkpoint at t = " << world_->time() << " s ("
@@ -494,7 +500,7 @@ void Foam::rbd::packedBed::resume()
             in.get(state_.released).get(state_.quietTime)
               .get(state_.nextLog).get(state_.lastRelease)
               .get(state_.warnedStall).get(state_.wallTime)
-              .get(state_.cpuTime);
+              .get(state_.cpuTime).get(state_.releaseOverlap);
         }
     );
 
@@ -1528,6 +1534,7 @@ void Foam::rbd::packedBed::write() const
     );
     summary.add("maxOverlap", w.stats().maxOverlap);
     summary.add("finalMaxOverlap", finalOverlap_);
+    summary.add("releaseOverlap", state_.releaseOverlap);
     summary.add("simulatedTime", w.time());
     summary.add("wallTime", wallTime_);
     summary.add("cpuTime", cpuTime_);

@@ -377,6 +377,10 @@ Foam::string Foam::rbd::bedOutput::summaryUnit(const word& key)
         {"bedPorosity", "[-] floor to bedHeight"},
         {"maxOverlap", "[m] largest interpenetration during the run"},
         {"finalMaxOverlap", "[m] largest interpenetration at the end"},
+        {
+            "releaseOverlap",
+            "[m] largest interpenetration at a release (bounding spheres)"
+        },
         {"simulatedTime", "[s]"},
         {"wallTime", "[s]"},
         {"cpuTime", "[s]"},

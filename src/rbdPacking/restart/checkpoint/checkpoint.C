@@ -15,7 +15,8 @@ namespace
 {
     //- The format's name and version
     const std::string magic("rbdPacking checkpoint");
-    const Foam::label version = 3;  // 3: the run's counters in 64 bits
+    const Foam::label version = 4;  // 3: the run's counters in 64 bits;
+                                    // 4: the release overlap
 
     //- Written as a label: read back the same only with the same byte order
     const Foam::label byteOrderMark = 0x01020304;
