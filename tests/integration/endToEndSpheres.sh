@@ -68,29 +68,8 @@ work="$(mktemp -d "${TMPDIR:-/tmp}/endToEndSpheres.XXXXXX")"
 cp -r "$here/cases/endToEndSpheres/." "$work"
 cd "$work" || exit 1
 
-fail()
-{
-    echo "endToEndSpheres: FAILED: $*" 1>&2
-    echo "endToEndSpheres: case kept in $work" 1>&2
-    exit 1
-}
-
-# run <step name> <command...>: log to log.<step name>, print the time
-run()
-{
-    local name="$1"
-    shift
-    local start end
-    start=$(date +%s.%N)
-    if ! "$@" > "log.$name" 2>&1
-    then
-        tail -30 "log.$name" 1>&2
-        fail "$* (see log.$name)"
-    fi
-    end=$(date +%s.%N)
-    awk -v n="$name" -v t="$start $end" \
-        'BEGIN {split(t, a, " "); printf "    %-26s %6.1f s\n", n, a[2] - a[1]}'
-}
+testName=endToEndSpheres
+. "$here/lib/caseSteps.sh"
 
 total=$(date +%s.%N)
 echo "endToEndSpheres in $work"

@@ -1,0 +1,29 @@
+#------------------------------------------------------------------------------
+# Sourced by the end-to-end scripts, in their case directory $work, with
+# $testName set: fail MESSAGE (prints it, keeps the case, exits 1) and
+# run STEP COMMAND... (logs to log.STEP, prints its time, fails with the
+# log's tail when the command fails).
+#------------------------------------------------------------------------------
+
+fail()
+{
+    echo "$testName: FAILED: $*" 1>&2
+    echo "$testName: case kept in $work" 1>&2
+    exit 1
+}
+
+run()
+{
+    local name="$1"
+    shift
+    local start end
+    start=$(date +%s.%N)
+    if ! "$@" > "log.$name" 2>&1
+    then
+        tail -30 "log.$name" 1>&2
+        fail "$* (see log.$name)"
+    fi
+    end=$(date +%s.%N)
+    awk -v n="$name" -v t="$start $end" \
+        'BEGIN {split(t, a, " "); printf "    %-26s %6.1f s\n", n, a[2] - a[1]}'
+}
