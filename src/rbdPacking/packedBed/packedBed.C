@@ -1653,7 +1653,11 @@ void Foam::rbd::packedBed::prepareCase() const
             found(d);
         }
     }
-    for (const fileName& d : readDir(root/"postProcessing", fileName::DIRECTORY))
+    for
+    (
+        const fileName& d
+      : readDir(root/"postProcessing", fileName::DIRECTORY)
+    )
     {
         if (d != bedOutput::directoryName.name())
         {
