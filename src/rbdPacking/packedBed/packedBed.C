@@ -773,7 +773,6 @@ void Foam::rbd::packedBed::checkFilling
 {
     const pelletShape& shape = shape_();
     const scalar rb = shape.boundingRadius();
-    const scalar R = tube_.radius();
     const scalar densest = densestPorosity;
     const scalar release = loading_->releaseHeight() - rb;
 
@@ -781,7 +780,7 @@ void Foam::rbd::packedBed::checkFilling
     // cannot even at the densest porosity, probably if they cannot at the
     // estimate (then the run stops releasing when the bed reaches the
     // release height, and the summary says how many it holds)
-    const scalar solidHeight = number_*shape.volume()/(pi*sqr(R));
+    const scalar solidHeight = this->solidHeight(number_);
     if (solidHeight/(1 - densest) > release)
     {
         FatalIOErrorInFunction(containerDict)
@@ -973,6 +972,12 @@ Foam::scalar Foam::rbd::packedBed::bedHeight() const
         top = max(top, b.x().z() + shape_->boundingRadius());
     }
     return top;
+}
+
+
+Foam::scalar Foam::rbd::packedBed::solidHeight(const label n) const
+{
+    return n*shape_->volume()/(pi*sqr(tube_.radius()));
 }
 
 
@@ -1315,8 +1320,7 @@ void Foam::rbd::packedBed::run()
         // tube at the expected porosity (pellets released exactly on the
         // axis land on one another and stay there)
         const scalar filled =
-            w.bodies().size()*shape.volume()
-           /((1 - epsEstimate_)*pi*sqr(tube_.radius()));
+            solidHeight(w.bodies().size())/(1 - epsEstimate_);
         if
         (
             bedHeight()
@@ -1772,8 +1776,7 @@ bool Foam::rbd::packedBed::reportOutcome
             os  << "The pellets stacked into a tower, not a random bed: "
                 << w.bodies().size() << " pellets stand " << bedHeight()
                 << " m high, where they fill about "
-                << w.bodies().size()*shape_->volume()
-                  /((1 - epsEstimate_)*pi*sqr(tube_.radius()))
+                << solidHeight(w.bodies().size())/(1 - epsEstimate_)
                 << " m of the tube." << nl
                 << "    Release them off the axis: loading/"
                 << "positionDisturbance (default 0.3 dp; the paper uses up "
