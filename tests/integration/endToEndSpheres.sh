@@ -101,19 +101,7 @@ do
         || fail "foamDictionary -expand $f"
 done
 
-run blockMesh blockMesh
-run surfaceFeatureExtract surfaceFeatureExtract
-run snappyHexMesh snappyHexMesh -overwrite
-run checkMesh checkMesh
-
-# checkMesh exits 0 even when a check fails
-grep -q '^Mesh OK\.' log.checkMesh || fail "checkMesh did not say 'Mesh OK.'"
-patches="$(awk '/Patch +Faces +Points/ {on=1; next}
-                on && NF == 0 {exit}
-                on {print $1}' log.checkMesh | sort | tr '\n' ' ')"
-[ "$patches" = "inlet outlet pellets wall " ] \
-    || fail "patches are '$patches', not 'inlet outlet pellets wall'"
-grep -E '^ +cells:' log.checkMesh
+meshCase
 
 run decomposePar decomposePar -force
 mpiFlags=""

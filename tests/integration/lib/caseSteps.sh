@@ -1,8 +1,10 @@
 #------------------------------------------------------------------------------
 # Sourced by the end-to-end scripts, in their case directory $work, with
-# $testName set: fail MESSAGE (prints it, keeps the case, exits 1) and
+# $testName set: fail MESSAGE (prints it, keeps the case, exits 1),
 # run STEP COMMAND... (logs to log.STEP, prints its time, fails with the
-# log's tail when the command fails).
+# log's tail when the command fails) and meshCase (blockMesh,
+# surfaceFeatureExtract, snappyHexMesh, checkMesh: 'Mesh OK.' and exactly
+# the patches inlet, outlet, pellets and wall).
 #------------------------------------------------------------------------------
 
 fail()
@@ -26,4 +28,23 @@ run()
     end=$(date +%s.%N)
     awk -v n="$name" -v t="$start $end" \
         'BEGIN {split(t, a, " "); printf "    %-26s %6.1f s\n", n, a[2] - a[1]}'
+}
+
+meshCase()
+{
+    run blockMesh blockMesh
+    run surfaceFeatureExtract surfaceFeatureExtract
+    run snappyHexMesh snappyHexMesh -overwrite
+    run checkMesh checkMesh
+
+    # checkMesh exits 0 even when a check fails
+    grep -q '^Mesh OK\.' log.checkMesh \
+        || fail "checkMesh did not say 'Mesh OK.'"
+    local patches
+    patches="$(awk '/Patch +Faces +Points/ {on=1; next}
+                    on && NF == 0 {exit}
+                    on {print $1}' log.checkMesh | sort | tr '\n' ' ')"
+    [ "$patches" = "inlet outlet pellets wall " ] \
+        || fail "patches are '$patches', not 'inlet outlet pellets wall'"
+    grep -E '^ +cells:' log.checkMesh
 }
