@@ -10,6 +10,7 @@
 #include "OStringStream.H"
 #include "IStringStream.H"
 #include "OSspecific.H"
+#include "../../testTools/dataRows.H"
 
 #include <cmath>
 #include <fstream>
@@ -92,30 +93,6 @@ namespace
             }
         }
         return sum;
-    }
-
-    //- Data rows (lines not starting with '#') as numbers
-    std::vector<std::vector<double>> rows(const std::string& text)
-    {
-        std::vector<std::vector<double>> result;
-        std::istringstream is(text);
-        std::string line;
-        while (std::getline(is, line))
-        {
-            if (line.empty() || line[0] == '#')
-            {
-                continue;
-            }
-            std::istringstream ls(line);
-            std::vector<double> row;
-            double v;
-            while (ls >> v)
-            {
-                row.push_back(v);
-            }
-            result.push_back(row);
-        }
-        return result;
     }
 }
 
@@ -268,7 +245,7 @@ TEST(bedVoidage, writesProfiles)
     );
     EXPECT_NE(text.find("R^2 = "), std::string::npos);
 
-    const auto data = rows(text);
+    const auto data = rbdTest::dataRows(text);
     ASSERT_EQ(data.size(), 20u);
     const scalarField eps(bed.radialProfile(20));
     const scalar epsBulk = bed.bulkPorosity();
@@ -293,13 +270,13 @@ TEST(bedVoidage, writesProfiles)
 
     OStringStream plain;
     bed.writeRadialProfile(plain, 10, 2*a, false);
-    const auto plainData = rows(plain.str());
+    const auto plainData = rbdTest::dataRows(plain.str());
     ASSERT_EQ(plainData.size(), 10u);
     EXPECT_EQ(plainData[0].size(), 3u);
 
     OStringStream axial;
     bed.writeAxialProfile(axial, 8);
-    const auto axialData = rows(axial.str());
+    const auto axialData = rbdTest::dataRows(axial.str());
     ASSERT_EQ(axialData.size(), 8u);
     EXPECT_EQ(axialData[0].size(), 2u);
     EXPECT_NEAR(axialData[0][0], 0.25, 1e-12);
@@ -416,7 +393,7 @@ TEST(bedVoidage, writesNoNaNWhereMuellerDoesNotApply)
             EXPECT_EQ(text.find("nan"), std::string::npos) << file;
             EXPECT_NE(text.find("Mueller: not applicable"), std::string::npos)
                 << file;
-            const auto data = rows(text);
+            const auto data = rbdTest::dataRows(text);
             ASSERT_FALSE(data.empty()) << file;
             // r, z, (eps,) de Klerk
             EXPECT_EQ
@@ -439,7 +416,7 @@ TEST(bedVoidage, writesSphereCorrelations)
 
     OStringStream os;
     bed.writeSphereCorrelations(os, 11, dp);
-    const auto data = rows(os.str());
+    const auto data = rbdTest::dataRows(os.str());
     ASSERT_EQ(data.size(), 11u);
 
     // From the wall (both correlations 1 there) to the axis
@@ -476,7 +453,8 @@ TEST(bedVoidage, writesSphereCorrelations)
     );
     EXPECT_EQ
     (
-        rows(text).size(), size_t(rbd::bedVoidage::correlationPoints)
+        rbdTest::dataRows(text).size(),
+        size_t(rbd::bedVoidage::correlationPoints)
     );
     rmDir(dir);
 }

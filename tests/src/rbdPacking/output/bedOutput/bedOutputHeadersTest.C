@@ -11,6 +11,7 @@
 #include "OSspecific.H"
 #include "foamFile.H"
 #include "mathematicalConstants.H"
+#include "../../testTools/dataRows.H"
 
 #include <fstream>
 #include <sstream>
@@ -32,31 +33,6 @@ namespace
         ss << is.rdbuf();
         return ss.str();
     }
-
-    //- The data rows (lines not starting with '#') as numbers
-    std::vector<std::vector<double>> rows(const std::string& text)
-    {
-        std::vector<std::vector<double>> r;
-        std::istringstream is(text);
-        std::string line;
-        while (std::getline(is, line))
-        {
-            if (line.empty() || line[0] == '#')
-            {
-                continue;
-            }
-            std::istringstream ls(line);
-            std::vector<double> v;
-            double x;
-            while (ls >> x)
-            {
-                v.push_back(x);
-            }
-            r.push_back(v);
-        }
-        return r;
-    }
-
     fileName tmpCase()
     {
         return "/tmp/rbdBedOutputHeadersTest-" + std::to_string(::getpid());
@@ -106,13 +82,13 @@ TEST(bedOutputHeaders, cylindersNamesNAndNvAndCoversTheBed)
     EXPECT_NE(radial.find(Nv.str()), std::string::npos) << radial;
     EXPECT_NE(radial.find("(R-r)/dpv [-]"), std::string::npos) << radial;
     // The wall distance column is in dpv (the paper's)
-    const auto r = rows(radial);
+    const auto r = rbdTest::dataRows(radial);
     ASSERT_EQ(r.size(), 20u);
     EXPECT_NEAR(r[0][1], (0.02 - r[0][0])/dpv, 1e-8);
 
     // axialPorosity.dat: from the floor to the top of the highest pellet,
     // not to H
-    const auto z = rows(contents(out.directory()/"axialPorosity.dat"));
+    const auto z = rbdTest::dataRows(contents(out.directory()/"axialPorosity.dat"));
     ASSERT_EQ(z.size(), 10u);
     const scalar dz = top/10;
     EXPECT_NEAR(z.front()[0], 0.5*dz, 1e-9);
