@@ -639,7 +639,7 @@ const Foam::dictionary& Foam::rbd::packedBed::checkBlocks
                     << b.dict().name() << ": a block { ... } where a value "
                     << "is expected" << nl
                     << "    allowed: a value (number, word, switch or list)"
-                    << " as the README's packingDict tables give it"
+                    << " as docs/packingDict.md gives it"
                     << exit(FatalIOError);
             }
         }

@@ -53,7 +53,7 @@ Foam::scalar Foam::rbd::correlations::dixonSpheres(const scalar N)
 
 Foam::scalar Foam::rbd::correlations::dixonCylinders(const scalar N)
 {
-    // RECALLED form (see correlations.md): check against Dixon 1988
+    // RECALLED form (docs/method.md, section 14): check against Dixon 1988
     return 0.36 + 0.10/N + 0.7/sqr(N);
 }
 
@@ -156,7 +156,7 @@ Foam::scalar Foam::rbd::correlations::deKlerk
     const scalar epsBulk
 )
 {
-    // RECALLED form (see correlations.md): check against de Klerk 2003
+    // RECALLED form (docs/method.md, section 14): check against de Klerk 2003
     if (z <= 0.637)
     {
         return 2.14*sqr(z) - 2.53*z + 1;
@@ -183,7 +183,7 @@ bool Foam::rbd::correlations::muellerApplies(const scalar N)
 
 Foam::scalar Foam::rbd::correlations::mueller(const scalar z, const scalar N)
 {
-    // RECALLED form (see correlations.md): check against Mueller 1992
+    // RECALLED form (docs/method.md, section 14): check against Mueller 1992
     if (!muellerApplies(N))
     {
         return notANumber;
@@ -232,7 +232,7 @@ Foam::scalar Foam::rbd::correlations::eisfeldSchnitzlein
     const eisfeldSchnitzleinShape shape
 )
 {
-    // RECALLED form and constants (see correlations.md)
+    // RECALLED form and constants (docs/method.md, section 14)
     const bool sphere = (shape == eisfeldSchnitzleinShape::sphere);
     const scalar K1 = sphere ? 154 : 190;
     const scalar k1 = sphere ? 1.15 : 2.00;

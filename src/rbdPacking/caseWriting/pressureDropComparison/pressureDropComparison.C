@@ -180,8 +180,8 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
     }
     tubeDiameter_ = getPositive(summary, "tubeDiameter", "m");
     // The correlations' dp is the volume-equivalent diameter dpv
-    // (correlations.md); summaries of sphere beds before dpv was written
-    // have pelletDiameter only, which is dpv for spheres
+    // (docs/method.md, section 14); summaries of sphere beds before dpv
+    // was written have pelletDiameter only, which is dpv for spheres
     pelletDiameter_ =
         summary.found("volumeEquivalentDiameter")
       ? getPositive(summary, "volumeEquivalentDiameter", "m")

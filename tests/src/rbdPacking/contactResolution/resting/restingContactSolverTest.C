@@ -263,7 +263,7 @@ TEST(restingFriction, staggeredResistsTheSlipOnAnIncline)
 {
     // restingFriction staggered (friction for the frictionless normal
     // forces, then the normal forces again) does not hold the cylinder
-    // (the known defect of the README: measured residual 2.0e-3 m/s per
+    // (the known defect of docs/history.md: measured residual 2.0e-3 m/s per
     // 1 ms step, 21 % of the weight), but its friction must oppose the
     // slip: without friction the residual is g sin(20 deg) h = 3.4e-3
     // m/s. Asserted: at most 75 % of that (measured 60 %), no contact
