@@ -6,7 +6,7 @@
 # outputs by its own route:
 #   - exit 0, 'End', status settled, all 8 pellets released;
 #   - largest interpenetration during the run (summary maxOverlap) below
-#     0.5 % dp, the limit of the mesh stability suite and the soak (README);
+#     0.5 % dp, the limit of the mesh stability suite and the soak (docs/soak.md);
 #   - containment: every vertex of pellets.stl within the tube (radius R,
 #     floor z = 0) to 0.1 % dp (ten times contactTolerance, the gap the
 #     overlap correction leaves);
