@@ -310,8 +310,9 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
     // 0.3-1.4; with the staggered friction of earlier versions seven of
     // seeds 1-12 were above 2.5 (up to 10). Asserted: each seed below its
     // own bound, about twice its measured value (at least 0.5 %), seed 3
-    // below 10 % (the known gap of docs/history.md, Known limitations: one run in six
-    // overlaps by several % dpv); their median below 1 %; the other
+    // below 10 % (the known gap of docs/history.md, Known limitations:
+    // one run in six overlaps by several % dpv); their median below 1 %;
+    // the other
     // checks every run
     const scalar bound[6] = {0.01, 0.005, 0.10, 0.01, 0.01, 0.015};
     std::vector<scalar> overlaps;
