@@ -312,8 +312,7 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
     // own bound, about twice its measured value (at least 0.5 %), seed 3
     // below 10 % (the known gap of docs/history.md, Known limitations:
     // one run in six overlaps by several % dpv); their median below 1 %;
-    // the other
-    // checks every run
+    // the other checks every run
     const scalar bound[6] = {0.01, 0.005, 0.10, 0.01, 0.01, 0.015};
     std::vector<scalar> overlaps;
     for (unsigned seed = 1; seed <= 6; ++seed)
