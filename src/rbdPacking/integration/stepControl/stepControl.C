@@ -1,0 +1,267 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "stepControl.H"
+#include "collisionResolver.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::stepControl::stepControl
+(
+    const scalar gravity,
+    const scalar restingVelocity,
+    const scalar band,
+    const scalar touch,
+    const scalar boundingRadius,
+    const bool centreGaps,
+    const scalar tubeRadius
+)
+:
+    g_(gravity),
+    restingVelocity_(restingVelocity),
+    band_(band),
+    touch_(touch),
+    rb_(boundingRadius),
+    centreGaps_(centreGaps),
+    tubeRadius_(tubeRadius)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::rbd::stepControl::timeToCover
+(
+    const Foam::scalar a,
+    const Foam::scalar b,
+    const Foam::scalar c
+)
+{
+    if (a <= 0)
+    {
+        return b > 0 ? c/b : Foam::GREAT;
+    }
+    // Stable form of (-b + sqrt(b^2 + 2 a c))/a
+    return 2*c/(b + Foam::sqrt(Foam::sqr(b) + 2*a*c));
+}
+
+
+Foam::scalar Foam::rbd::stepControl::timeToLeaveCircle
+(
+    const Foam::vector& p,
+    const Foam::vector& v,
+    const Foam::scalar rho
+)
+{
+    const Foam::scalar a = Foam::magSqr(v);
+    if (a <= 0)
+    {
+        return Foam::GREAT;
+    }
+    const Foam::scalar b = p & v;
+    const Foam::scalar c = Foam::min(Foam::magSqr(p) - Foam::sqr(rho), 0);
+    const Foam::scalar root = Foam::sqrt(Foam::sqr(b) - a*c);
+    // The positive root of a t^2 + 2 b t + c = 0, without cancellation
+    return b > 0 ? -c/(b + root) : (root - b)/a;
+}
+
+
+Foam::scalar Foam::rbd::stepControl::choose
+(
+    const scalar hMax,
+    const UList<rigidBody>& bodies,
+    const boolList& fixed,
+    const UList<label>& awake,
+    const UList<labelPair>& activePairs,
+    const UList<contact>& contacts,
+    const scalar unlistedClearance
+) const
+{
+    const scalar g = g_;
+    const scalar epsP = restingVelocity_;
+
+    // Spheres: the gaps depend on the centres only, so rotation does not
+    // close them; otherwise the surface moves up to |omega| r_b faster
+    const bool centreGaps = centreGaps_;
+    auto surfaceSpeed = [&](const label i)
+    {
+        const rigidBody& b = bodies[i];
+        return
+            fixed[i] ? 0
+          : mag(b.v()) + (centreGaps ? 0 : mag(b.omega())*rb_);
+    };
+
+    // Time for a gap closing at rate u (acceleration up to a) to shrink to
+    // half the touching gap: the next step finds the pair touching and the
+    // collision stage resolves it (the paper's "back up to the last state
+    // before contact")
+    auto untilTouching = [&](const scalar gap, const scalar u, const scalar a)
+    {
+        return timeToCover(a, max(u, scalar(0)), max(gap - 0.5*touch_, 0.0));
+    };
+
+    scalar h = hMax;
+
+    // 1. Pairs the broad phase has not listed are at least cutoff + the
+    //    unlisted clearance apart, i.e. their bounding spheres at least
+    //    lambda + clearance: no body may cover half of that
+    scalar sMax = 0;
+    for (const label i : awake)
+    {
+        sMax = max(sMax, surfaceSpeed(i));
+    }
+    h = min
+    (
+        h,
+        untilTouching
+        (
+            band_ + unlistedClearance, 2*sMax, 2*g
+        )
+    );
+
+    // Eq 38 for a pair (k < 0: the container) whose bounding spheres are
+    // within the band: delta_t <= 0.2 lambda/|v_ik,max|, |v_ik,max| the
+    // largest relative surface speed |v_i - v_k| + (|omega_i| + |omega_k|)
+    // r_b (spheres: of the centres). Needed for meshes: a pair may be
+    // within the band of its bounding spheres before any feature is
+    // within the band of the surfaces, and no feature may then cross the
+    // band in one step.
+    auto eq38 = [&](const label i, const label k)
+    {
+        const bool kMoves = k >= 0 && !fixed[k];
+        const vector vCentres
+        (
+            (fixed[i] ? Zero : bodies[i].v())
+          - (kMoves ? bodies[k].v() : Zero)
+        );
+        scalar speed = mag(vCentres);
+        if (!centreGaps)
+        {
+            speed +=
+                (
+                    (fixed[i] ? 0 : mag(bodies[i].omega()))
+                  + (kMoves ? mag(bodies[k].omega()) : 0)
+                )*rb_;
+        }
+        // ... closing also under an acceleration up to g per moving body
+        // for meshes: a pair at rest within the band of its bounding
+        // spheres but with no feature within the band (no contact yet) is
+        // otherwise given the outer interval, and a pellet starting to
+        // fall onto another closes g h^2/2 in it (3 mm at 1/40 s: a ring
+        // released 1 mm over another went 0.7 mm into it). (Spheres have
+        // their contact within the band, held by the resting solve.)
+        const scalar a =
+            centreGaps ? 0 : (k < 0 || !kMoves || fixed[i]) ? g : 2*g;
+        return timeToCover(a, speed, 0.2*band_);
+    };
+
+    // 2. Listed pairs apart by more than the band: their bounding spheres
+    //    may approach until touching
+    for (const labelPair& pr : activePairs)
+    {
+        const label i = pr.first();
+        const label k = pr.second();
+        const vector d(bodies[i].x() - bodies[k].x());
+        const scalar dist = mag(d);
+        const scalar gap = dist - 2*rb_;
+        if (gap > band_)
+        {
+            const vector vRel
+            (
+                (fixed[i] ? Zero : bodies[i].v())
+              - (fixed[k] ? Zero : bodies[k].v())
+            );
+            const scalar u =
+              - (vRel & d)/dist + surfaceSpeed(i) - mag(bodies[i].v())
+              + surfaceSpeed(k) - mag(bodies[k].v());
+            const scalar a = (fixed[i] || fixed[k]) ? g : 2*g;
+            h = min(h, untilTouching(gap, u, a));
+        }
+        else if (!centreGaps)
+        {
+            h = min(h, fixed[i] ? eq38(k, i) : eq38(i, k));
+        }
+    }
+
+    // ... and the container, the same way
+    const scalar R = tubeRadius_;
+    for (const label i : awake)
+    {
+        const rigidBody& b = bodies[i];
+        const scalar spin = surfaceSpeed(i) - mag(b.v());
+        const scalar zGap = b.x().z() - rb_;
+        if (zGap > band_)
+        {
+            h = min(h, untilTouching(zGap, -b.v().z() + spin, g));
+        }
+        else if (!centreGaps)
+        {
+            h = min(h, eq38(i, tubeBottom));
+        }
+        const vector rho(b.x().x(), b.x().y(), 0);
+        const scalar rhoMag = mag(rho);
+        const scalar wallGap = R - rhoMag - rb_;
+        if (wallGap > band_ && (rhoMag > VSMALL || centreGaps))
+        {
+            // Radial speed (a sphere on the axis: the exact time below)
+            if (rhoMag > VSMALL)
+            {
+                const scalar u = (b.v() & rho)/rhoMag + spin;
+                h = min(h, untilTouching(wallGap, u, g));
+            }
+
+            // The wall is concave: a pellet moving along it closes the gap
+            // faster than its radial speed says (the gap along a straight
+            // path is concave in time, closing with v_t^2/rho on top of
+            // the radial speed). The exact time for the centre's
+            // horizontal path to reach the radius of touching: without
+            // it, a sphere skimming the wall of a 31 mm tube at 1.1 m/s
+            // went 4e-5 m into it in one 1 ms step.
+            const vector vH(b.v().x(), b.v().y(), 0);
+            h = min
+            (
+                h,
+                timeToLeaveCircle(rho, vH, R - rb_ - 0.5*touch_)
+            );
+        }
+        else if (!centreGaps)
+        {
+            // Within the band (or on the axis): eq 38
+            h = min(h, eq38(i, tubeWall));
+        }
+    }
+
+    // 3. Contacts within the band
+    for (const contact& c : contacts)
+    {
+        const vector vRel
+        (
+            collisionResolver::relativeVelocity(c, bodies, fixed)
+        );
+
+        // Eq 38 for the pair of every contact
+        h = min(h, eq38(c.i, c.k));
+
+        // Approaching contacts stop at the touching gap
+        if (c.gap > touch_)
+        {
+            const scalar vn = (vRel & c.n);
+            if (vn < -epsP)
+            {
+                // Colliding soon: gravity counted
+                h = min(h, untilTouching(c.gap, -vn, g));
+            }
+            else if (vn < 0)
+            {
+                // Resting approach: the resting-contact solve holds the
+                // acceleration, the step bounds the closing velocity
+                h = min(h, untilTouching(c.gap, -vn, 0));
+            }
+        }
+    }
+
+    return h;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,194 @@
+// The step length of src/rbdPacking/integration/stepControl (section 7 of
+// docs/method.md, eq 38): closed forms of the helpers, and the bounds that
+// keep a pair from closing the touching gap unseen
+
+#include <gtest/gtest.h>
+#include "stepControl.H"
+#include "sphereContacts.H"
+
+using namespace Foam;
+using namespace Foam::rbd;
+
+namespace
+{
+    const scalar r = 0.005;
+    const scalar m = 1.3e-3;
+    const vector I(0.4*m*r*r, 0.4*m*r*r, 0.4*m*r*r);
+    const scalar g = 9.81;
+    const scalar epsP = 1e-3;
+    const scalar band = 0.1*r;
+    const scalar touch = 1e-5*2*r;
+    const scalar tubeRadius = 0.1;
+    const scalar hMax = 0.025;
+
+    rigidBody sphereAt(const point& x, const vector& v)
+    {
+        rigidBody b(m, I, x, quaternion(1), true);
+        b.setState(x, quaternion(1), m*v, Zero);
+        return b;
+    }
+
+    stepControl control(const bool centreGaps)
+    {
+        return stepControl(g, epsP, band, touch, r, centreGaps, tubeRadius);
+    }
+}
+
+
+TEST(stepControl, timeToCoverSolvesTheQuadratic)
+{
+    // a/2 h^2 + b h = c, also where b^2 >> a c (the stable form)
+    for (const scalar a : {0.0, 1.0, 9.81, 1e4})
+    {
+        for (const scalar b : {0.0, 1e-6, 0.3, 30.0})
+        {
+            const scalar c = 1e-4;
+            const scalar h = stepControl::timeToCover(a, b, c);
+            if (a == 0 && b == 0)
+            {
+                EXPECT_EQ(h, GREAT);
+                continue;
+            }
+            EXPECT_GE(h, 0);
+            EXPECT_NEAR(0.5*a*h*h + b*h, c, 1e-12*c)
+                << "a " << a << " b " << b;
+        }
+    }
+}
+
+
+TEST(stepControl, timeToLeaveCircleHitsTheCircle)
+{
+    const scalar rho = 0.02;
+    const point p(0.005, -0.003, 0);
+    for (const vector v : {vector(1, 0, 0), vector(-0.2, 0.7, 0),
+                           vector(1e-6, 0, 0), vector(0, -3, 0)})
+    {
+        const scalar t = stepControl::timeToLeaveCircle(p, v, rho);
+        EXPECT_GT(t, 0);
+        EXPECT_NEAR(mag(p + v*t), rho, 1e-12);
+    }
+    EXPECT_EQ(stepControl::timeToLeaveCircle(p, Zero, rho), GREAT);
+}
+
+
+TEST(stepControl, bodiesAtRestFallAtMostTheUnlistedClearance)
+{
+    // At rest far from everything: an unlisted pair may close band +
+    // clearance under gravity on both bodies (2g) in free fall, to half
+    // the touching gap; nothing else is shorter
+    List<rigidBody> bs(2);
+    bs[0] = sphereAt(point(0.01, 0, 0.05), Zero);
+    bs[1] = sphereAt(point(0.04, 0, 0.05), Zero);
+    const boolList fixed(2, false);
+    const labelList awake({0, 1});
+    const List<labelPair> pairs;
+    const List<contact> contacts;
+
+    const scalar clearance = 0.5*r;
+    const scalar h = control(true).choose
+    (
+        hMax, bs, fixed, awake, pairs, contacts, clearance
+    );
+    EXPECT_DOUBLE_EQ
+    (
+        h,
+        Foam::sqrt(2*(band + clearance - 0.5*touch)/(2*g))
+    );
+
+    // With a clearance that takes longer than the outer interval to fall
+    EXPECT_EQ
+    (
+        control(true).choose(hMax, bs, fixed, awake, pairs, contacts, 1),
+        hMax
+    );
+}
+
+
+TEST(stepControl, approachingListedPairStopsShortOfTouching)
+{
+    // Two spheres closing head on at 2 m/s, apart by 1 mm (beyond the
+    // band): after the step they are still apart, by about half the
+    // touching gap (gravity bounded by 2g makes the step shorter)
+    const scalar gap0 = 1e-3;
+    const scalar u = 2;
+    List<rigidBody> bs(2);
+    // (off the axis: a mesh pellet on it takes eq 38 for the wall)
+    bs[0] = sphereAt(point(0.01, 0, 0.05), vector(0.5*u, 0, 0));
+    bs[1] = sphereAt(point(0.01 + 2*r + gap0, 0, 0.05), vector(-0.5*u, 0, 0));
+    const boolList fixed(2, false);
+    const labelList awake({0, 1});
+    const List<labelPair> pairs({labelPair(0, 1)});
+    const List<contact> contacts;
+
+    for (const bool centreGaps : {true, false})
+    {
+        const scalar h = control(centreGaps).choose
+        (
+            hMax, bs, fixed, awake, pairs, contacts, 10*r
+        );
+        const scalar gapAfter = gap0 - u*h;
+        EXPECT_GT(gapAfter, 0) << "centreGaps " << centreGaps;
+        EXPECT_LE(gapAfter, gap0*1e-2) << "centreGaps " << centreGaps;
+    }
+}
+
+
+TEST(stepControl, eq38BoundsAContactWithinTheBand)
+{
+    // A pair within the band separating sideways at |v_rel| = 3 m/s:
+    // h <= 0.2 lambda/|v_rel| (eq 38)
+    const scalar vRel = 3;
+    List<rigidBody> bs(2);
+    bs[0] = sphereAt(point(0, 0, 0.05), vector(0, 0.5*vRel, 0));
+    bs[1] = sphereAt(point(2*r + 0.5*band, 0, 0.05), vector(0, -0.5*vRel, 0));
+    const boolList fixed(2, false);
+    const labelList awake({0, 1});
+    const List<labelPair> pairs({labelPair(0, 1)});
+
+    List<contact> contacts(1);
+    ASSERT_TRUE
+    (
+        sphereContacts::sphereSphere
+        (
+            0, bs[0], r, 1, bs[1], r, band, contacts[0]
+        )
+    );
+
+    for (const bool centreGaps : {true, false})
+    {
+        const scalar h = control(centreGaps).choose
+        (
+            hMax, bs, fixed, awake, pairs, contacts, 10*r
+        );
+        EXPECT_LE(h, 0.2*band/vRel*(1 + 1e-12))
+            << "centreGaps " << centreGaps;
+        EXPECT_GT(h, 0);
+    }
+}
+
+
+TEST(stepControl, sphereSkimmingTheWallStaysInside)
+{
+    // A sphere moving along the wall's tangent closes the gap faster than
+    // its radial speed says (the wall is concave): the step ends before
+    // its centre leaves the circle of touching
+    const scalar R = tubeRadius;
+    const point x(R - r - 1e-3, 0, 0.05);
+    const vector v(0, 1.1, 0);
+    List<rigidBody> bs(1);
+    bs[0] = sphereAt(x, v);
+    const boolList fixed(1, false);
+    const labelList awake({0});
+    const List<labelPair> pairs;
+    const List<contact> contacts;
+
+    const scalar h = control(true).choose
+    (
+        hMax, bs, fixed, awake, pairs, contacts, 10*r
+    );
+    const point xEnd = x + v*h;
+    const scalar rhoEnd = Foam::sqrt(sqr(xEnd.x()) + sqr(xEnd.y()));
+    EXPECT_LT(rhoEnd, R - r);
+    EXPECT_GT(rhoEnd, R - r - 0.5*touch - 1e-9);
+}
