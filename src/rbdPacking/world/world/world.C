@@ -53,9 +53,11 @@ Foam::rbd::world::world
     hullRimAngles_(),
     bodies_(),
     fixed_(),
-    slowTime_(),
-    anchorX_(),
-    anchorQ_(),
+    sleep_
+    (
+        controls.sleepVelocity, controls.sleepTime, rb_, band_, rotates,
+        shape.isSphere()
+    ),
     neighbours_(controls.neighbourSkin*shape.boundingRadius()),
     awake_(),
     activePairs_(),
@@ -145,9 +147,7 @@ Foam::label Foam::rbd::world::addBody(const point& x, const quaternion& q)
 
     bodies_.append(rigidBody(m, I, x, q, rotates_));
     fixed_.append(false);
-    slowTime_.append(0);
-    anchorX_.append(x);
-    anchorQ_.append(q);
+    sleep_.addBody(x, q);
     sleepSetChanged();
     return bodies_.size() - 1;
 }
@@ -359,112 +359,11 @@ void Foam::rbd::world::projectOverlaps()
 
 void Foam::rbd::world::updateSleep(const scalar h)
 {
-    const scalar vSleep = controls_.sleepVelocity;
-    if (vSleep <= 0)
+    boolList sleeps;
+    if (!sleep_.fallAsleep(h, bodies_, fixed_, awake(), contacts_, sleeps))
     {
         return;
     }
-    const scalar drift = vSleep*controls_.sleepTime;
-
-    // Who rests on whom: a contact whose normal, from the other pellet
-    // towards this one, points up
-    std::vector<std::pair<label, label>> restsOn;
-    for (const contact& c : contacts_)
-    {
-        if (c.k < 0)
-        {
-            continue;
-        }
-        if (c.n.z() > 0 && !fixed_[c.k])
-        {
-            restsOn.emplace_back(c.i, c.k);
-        }
-        else if (c.n.z() < 0 && !fixed_[c.i])
-        {
-            restsOn.emplace_back(c.k, c.i);
-        }
-    }
-
-    const bool turns = rotates_ && !shape_.isSphere();
-    for (const label i : awake())
-    {
-        rigidBody& b = bodies_[i];
-
-        scalar moved = mag(b.x() - anchorX_[i]);
-        if (turns)
-        {
-            // Angle of the rotation from the anchor, at the bounding radius
-            const quaternion& qa = anchorQ_[i];
-            const scalar cosHalf = min
-            (
-                mag(b.q().w()*qa.w() + (b.q().v() & qa.v())),
-                scalar(1)
-            );
-            moved += 2*Foam::acos(cosHalf)*rb_;
-        }
-
-        if (moved > drift)
-        {
-            anchorX_[i] = b.x();
-            anchorQ_[i] = b.q();
-            slowTime_[i] = 0;
-            continue;
-        }
-
-        slowTime_[i] += h;
-    }
-
-    // The still pellets that may sleep: each rests only on sleepers, the
-    // container or other pellets that fall asleep with it (pellets resting
-    // on each other, as interlocked rings do, sleep together), found by
-    // removing the still pellets that rest on a pellet staying awake until
-    // none is left
-    boolList sleeps(bodies_.size(), false);
-    bool anyStill = false;
-    for (const label i : awake())
-    {
-        sleeps[i] = slowTime_[i] >= controls_.sleepTime;
-        anyStill = anyStill || sleeps[i];
-    }
-    if (!anyStill)
-    {
-        return;
-    }
-
-    // Only a pellet resting on another or touching the container may
-    // sleep: one still in the air (a slow fall at a small gravity, a large
-    // sleepVelocity) stays awake
-    {
-        boolList supported(bodies_.size(), false);
-        for (const contact& c : contacts_)
-        {
-            if (c.k < 0 || c.n.z() > 0)
-            {
-                supported[c.i] = true;
-            }
-            else if (c.n.z() < 0)
-            {
-                supported[c.k] = true;
-            }
-        }
-        for (const label i : awake())
-        {
-            sleeps[i] = sleeps[i] && supported[i];
-        }
-    }
-    for (bool removed = true; removed; )
-    {
-        removed = false;
-        for (const auto& pr : restsOn)
-        {
-            if (sleeps[pr.first] && !sleeps[pr.second])
-            {
-                sleeps[pr.first] = false;
-                removed = true;
-            }
-        }
-    }
-    bool changed = false;
     for (const label i : awake())
     {
         if (sleeps[i])
@@ -474,63 +373,19 @@ void Foam::rbd::world::updateSleep(const scalar h)
             b.setState(b.x(), b.q(), Zero, Zero);
             F_[i] = Zero;
             tau_[i] = Zero;
-            changed = true;
         }
     }
-    if (changed)
-    {
-        sleepSetChanged();
-    }
+    sleepSetChanged();
 }
 
 
 bool Foam::rbd::world::wake(const label i)
 {
-    // A pellet waking restarts its sleep window; the sleepers whose centre
-    // is above its own (spheres: exactly those that can rest on it; other
-    // shapes: above its centre less half the bounding radius) wake with it
-    const bool spheres = shape_.isSphere();
-    const scalar below = spheres ? 0 : 0.5*rb_;
-    const scalar reach = sqr(2*rb_ + band_);
-
-    bool woke = false;
-    DynamicList<label> stack;
-    stack.append(i);
-    bool first = true;
-    while (stack.size())
+    const bool woke =
+        sleep_.wake(i, bodies_, fixed_, neighbours_.adjacency());
+    if (woke)
     {
-        const label j = stack.remove();
-        if (!fixed_[j] && !first)
-        {
-            continue;
-        }
-        first = false;
-        if (fixed_[j])
-        {
-            woke = true;
-            sleepSetChanged();
-        }
-        fixed_[j] = false;
-        slowTime_[j] = 0;
-        anchorX_[j] = bodies_[j].x();
-        anchorQ_[j] = bodies_[j].q();
-
-        if (j >= neighbours_.adjacency().size())
-        {
-            continue;
-        }
-        for (const label k : neighbours_.adjacency()[j])
-        {
-            if
-            (
-                fixed_[k]
-             && bodies_[k].x().z() > bodies_[j].x().z() - below
-             && magSqr(bodies_[k].x() - bodies_[j].x()) <= reach
-            )
-            {
-                stack.append(k);
-            }
-        }
+        sleepSetChanged();
     }
     return woke;
 }
@@ -771,8 +626,8 @@ void Foam::rbd::world::writeState(stateWriter& out) const
     {
         bodies_[i].writeState(out);
     }
-    out.putList(fixed_).putList(slowTime_).putList(anchorX_)
-       .putList(anchorQ_);
+    out.putList(fixed_);
+    sleep_.writeState(out);
     neighbours_.writeState(out);
     resting_.writeState(out);
 
@@ -803,14 +658,10 @@ void Foam::rbd::world::readState(stateReader& in)
         addBody(Zero, quaternion(1));
         bodies_[i].readState(in);
     }
-    in.getList(fixed_).getList(slowTime_).getList(anchorX_)
-      .getList(anchorQ_);
+    in.getList(fixed_);
+    const label nSleep = sleep_.readState(in);
     sleepSetChanged();
-    if
-    (
-        fixed_.size() != n || slowTime_.size() != n || anchorX_.size() != n
-     || anchorQ_.size() != n
-    )
+    if (fixed_.size() != n || nSleep != n)
     {
         FatalErrorInFunction
             << "The checkpoint " << in.name().c_str() << " holds " << n
