@@ -5,8 +5,9 @@
 # d = h = 10 mm in a tube of 30 mm, cfdCase contactTreatment caps, a coarse
 # mesh) goes the whole way with the built rbdPackBed and rbdPressureDrop and
 # Debian's OpenFOAM v1912, with no hand editing:
-#     rbdPackBed                 exit 0, status settled; caps cut at the
-#                                contacts the log and the summary count
+#     rbdPackBed                 exit 0, status settled, releaseOverlap
+#                                0; caps cut at the contacts the log and
+#                                the summary count
 #                                (treatedContacts > 0, the same number);
 #                                every pellet of pellets.stl clear of the
 #                                tube wall by more than capHeight/4 (the
@@ -59,6 +60,7 @@ echo "endToEndCaps in $work"
 run rbdPackBed rbdPackBed
 summary=postProcessing/rbdPackBed/summary
 [ -f "$summary" ] || fail "no summary written"
+releaseOverlapZero
 [ -f constant/triSurface/pellets.stl ] || fail "no pellets.stl written"
 get() { foamDictionary -entry "$1" -value "$2" 2>/dev/null; }
 [ "$(get status $summary)" = settled ] || fail "status $(get status $summary)"

@@ -4,7 +4,8 @@
 # 30 spheres of dp = 10 mm in a tube of D = 4 dp) goes the whole way with the
 # built rbdPackBed and rbdPressureDrop and Debian's OpenFOAM v1912, with no
 # hand editing:
-#     rbdPackBed                        exit 0, summary and case files written
+#     rbdPackBed                        exit 0, summary (releaseOverlap 0)
+#                                       and case files written
 #     foamDictionary -expand            on every written dictionary
 #     blockMesh, surfaceFeatureExtract, snappyHexMesh -overwrite
 #     checkMesh                         'Mesh OK.' (it exits 0 even when a
@@ -76,6 +77,7 @@ echo "endToEndSpheres in $work"
 
 run rbdPackBed rbdPackBed
 [ -f postProcessing/rbdPackBed/summary ] || fail "no summary written"
+releaseOverlapZero
 [ -f constant/triSurface/pellets.stl ] || fail "no pellets.stl written"
 grep -E '^(pellets|bedHeight|bulkPorosity|bedPorosity) ' \
     postProcessing/rbdPackBed/summary | sed 's/^/    /'

@@ -8,9 +8,12 @@
 # t = 0 and still falling freely at its end, so pellets.csv holds the
 # release poses: (x, y) the column points (s, 0), (0, s), (-s, 0), (0, -s)
 # (four columns) or (s, 0), (-s, 0) (two), s = columnOffset, default
-# (R - r_b)/2; z = releaseHeight - g t^2/2; the body axis tilted by 'tilt'
-# about the world x axis, q = (cos(tilt/2), sin(tilt/2), 0, 0), or within
-# angleDisturbance of that; offsets within positionDisturbance dp.
+# midway between its bounds (R/2 for two columns); z = releaseHeight -
+# g t^2/2; the body axis tilted by 'tilt' about the world x axis,
+# q = (cos(tilt/2), sin(tilt/2), 0, 0), or within angleDisturbance of that;
+# offsets within positionDisturbance dp. limitsRelease: every scheme at the
+# largest positionDisturbance its bounds allow (loadingScheme's
+# Description), released clear of the wall and of one another.
 #
 # Packing cases: the whole run, twice: settled, every vertex of pellets.stl
 # in the tube, largest overlap below 0.5 % dp, the same pellets.csv from the
@@ -64,11 +67,15 @@ pack()
 
 get() { foamDictionary -entry "$2" -value "$1/postProcessing/rbdPackBed/summary" 2>/dev/null; }
 
-# release <dir> <scheme> <columns>: the short run and the checks every
-# release case shares; the column offset it finds is in $s
+# release <dir> <scheme> <columns> [staggered]: the short run and the
+# checks every release case shares; the column offset it finds is in $s.
+# staggered: a pellet may be held back a step or more by the release rule
+# (it came within the proximity band of a pellet of the same release, as
+# draws at a bound may): every pellet in free fall from 0.05 m since t = 0
+# or later, not necessarily from t = 0
 release()
 {
-    local d="$1" scheme="$2" nc="$3"
+    local d="$1" scheme="$2" nc="$3" staggered="${4:-}"
     foamDictionary "$d/system/packingDict" -entry pellets/number -set "$nc" > /dev/null
     foamDictionary "$d/system/packingDict" -entry simulation/deltaT -set 0.001 > /dev/null
     foamDictionary "$d/system/packingDict" -entry simulation/endTime -set 0.02 > /dev/null
@@ -81,8 +88,14 @@ release()
         "[ \$(tail -n +2 $csv 2>/dev/null | wc -l) -eq $nc ]"
     # The simulated time, and every pellet still at z = releaseHeight - g t^2/2
     t="$(get "$d" simulatedTime)"
-    check "$scheme: simulated $t s, every pellet in free fall from 0.05 m" \
-        "awk -F, -v t=$t -v g=$g 'NR > 1 {z = 0.05 - 0.5*g*t*t; if ((\$5 - z)^2 > 1e-18) bad = 1} END {exit bad || t < 0.019}' $csv"
+    if [ -z "$staggered" ]
+    then
+        check "$scheme: simulated $t s, every pellet in free fall from 0.05 m" \
+            "awk -F, -v t=$t -v g=$g 'NR > 1 {z = 0.05 - 0.5*g*t*t; if ((\$5 - z)^2 > 1e-18) bad = 1} END {exit bad || t < 0.019}' $csv"
+    else
+        check "$scheme: simulated $t s, every pellet in free fall from 0.05 m, released at t = 0 or later" \
+            "awk -F, -v t=$t -v g=$g 'NR > 1 {z = 0.05 - 0.5*g*t*t; if (\$5 < z - 1e-9 || \$5 > 0.05) bad = 1} END {exit bad || t < 0.019}' $csv"
+    fi
     # The column offset the log echoes
     s="$(awk '$1 == "columnOffset" {sub(";", "", $2); print $2; exit}' $d.log)"
 }
@@ -108,8 +121,8 @@ twoColumnsRelease)
     setup "$tmp/a" loading/tilt 60 loading/positionDisturbance 0.3 \
         loading/angleDisturbance 20 loading/seed 3
     release "$tmp/a" twoColumns 2
-    s0="$(awk -v R=$R -v r=$rb 'BEGIN {printf "%.6g", (R - r)/2}')"
-    check "default columnOffset $s = (R - r_b)/2 = $s0" \
+    s0="$(awk -v R=$R 'BEGIN {printf "%.6g", R/2}')"
+    check "default columnOffset $s = R/2 = $s0 (midway between r_b + 0.3 dp and R - r_b - 0.3 dp)" \
         "awk -v a=$s -v b=$s0 'BEGIN {exit !((a - b)^2 < 1e-18)}'"
     # Pellet k from column k: (s, 0) then (-s, 0); within 0.3 dp of it,
     # and moved from it (the disturbance is drawn)
@@ -133,10 +146,49 @@ twoColumnsRelease)
         "[ -s $tmp/c/postProcessing/rbdPackBed/pellets.csv ] && ! cmp -s $csv $tmp/c/postProcessing/rbdPackBed/pellets.csv"
     ;;
 
+limitsRelease)
+    # The largest positionDisturbance [-] of each scheme, from the bounds
+    # (k = 1 two columns, sqrt(2) four; layers: pitch 1.1 x 2 r_b, so
+    # delta <= (1.1 r_b - r_b)), rounded down in the 7th digit
+    lim()
+    {
+        awk -v R=$R -v r=$rb -v d=$dp -v s="$1" 'BEGIN {
+            k = sqrt(2)
+            if (s == "column") x = (R - r)/d
+            if (s == "twoColumns") x = (R - 2*r)/(2*d)
+            if (s == "fourColumns") x = (R - (1 + k)*r)/((1 + k)*d)
+            if (s == "layers") x = 0.1*r/d
+            printf "%.7f", x - 5e-8}'
+    }
+    for scheme in column twoColumns fourColumns layers
+    do
+        pd="$(lim $scheme)"
+        nc=1
+        [ $scheme = twoColumns ] && nc=2
+        [ $scheme = fourColumns ] && nc=4
+        # layers: lattice points within R - r_b - delta = 17.2 mm, pitch
+        # 15.6 mm: the axis and a ring of six
+        [ $scheme = layers ] && nc=7
+        for seed in 1 2 3
+        do
+            d="$tmp/$scheme$seed"
+            setup "$d" loading/positionDisturbance "$pd" loading/seed $seed \
+                loading/spacing 1.1
+            release "$d" $scheme $nc staggered
+            check "$scheme, seed $seed, positionDisturbance $pd: summary releaseOverlap 0" \
+                "[ \"\$(get $d releaseOverlap)\" = 0 ]"
+            # Every centre within R - r_b of the axis, every two bounding
+            # spheres clear (to 1e-12 m)
+            check "$scheme, seed $seed: every centre within R - r_b, no two bounding spheres overlapping" \
+                "awk -F, -v R=$R -v r=$rb 'NR > 1 {n++; x[n] = \$3; y[n] = \$4; z[n] = \$5} END {for (i = 1; i <= n; i++) {if (sqrt(x[i]^2 + y[i]^2) > R - r + 1e-12) exit 1; for (j = 1; j < i; j++) if (sqrt((x[i] - x[j])^2 + (y[i] - y[j])^2 + (z[i] - z[j])^2) < 2*r - 1e-12) exit 1} exit n < 1}' $csv"
+        done
+    done
+    ;;
+
 twoColumnsPack|fourColumnsPack)
     if [ "$case" = twoColumnsPack ]
     then
-        entries="loading/scheme twoColumns loading/columnOffset 0.006 loading/tilt 60 loading/angleDisturbance 30"
+        entries="loading/scheme twoColumns loading/columnOffset 0.008 loading/tilt 60 loading/angleDisturbance 30"
     else
         entries="loading/scheme fourColumns loading/tilt 10 loading/angleDisturbance 45 loading/positionDisturbance 0.2"
     fi

@@ -4,8 +4,10 @@
 # run STEP COMMAND... (logs to log.STEP, prints its time, fails with the
 # log's tail when the command fails) and meshCase (blockMesh,
 # surfaceFeatureExtract, snappyHexMesh, checkMesh: 'Mesh OK.' and exactly
-# the patches inlet, outlet, pellets and wall).
+# the patches inlet, outlet, pellets and wall), releaseOverlapZero (the
+# summary's releaseOverlap is 0: lib/summary.sh).
 #------------------------------------------------------------------------------
+. "$(dirname "${BASH_SOURCE[0]}")/summary.sh"
 
 fail()
 {
@@ -47,4 +49,13 @@ meshCase()
     [ "$patches" = "inlet outlet pellets wall " ] \
         || fail "patches are '$patches', not 'inlet outlet pellets wall'"
     grep -E '^ +cells:' log.checkMesh
+}
+
+releaseOverlapZero()
+{
+    local v
+    v="$(releaseOverlapOf postProcessing/rbdPackBed/summary)"
+    [ "$v" = 0 ] || fail "releaseOverlap ${v:-missing} in the summary: a" \
+        "pellet was released into another or into the container"
+    echo "    releaseOverlap 0"
 }

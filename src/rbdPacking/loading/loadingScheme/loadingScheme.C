@@ -19,6 +19,9 @@ const Foam::wordList Foam::rbd::loadingScheme::schemes
 });
 
 
+const Foam::scalar Foam::rbd::loadingScheme::boundTolerance = 1e-12;
+
+
 const Foam::wordList Foam::rbd::loadingScheme::knownEntries
 ({
     "scheme", "spacing", "tilt", "positionDisturbance",
@@ -38,10 +41,7 @@ Foam::rbd::loadingScheme::loadingScheme
     scheme_(getChoiceOrDefault(dict, "scheme", "column", schemes)),
     spacing_(getPositiveOrDefault(dict, "spacing", 1.2, "-")),
     tilt_(getInRangeOrDefault(dict, "tilt", 45, 0, 180, "deg")),
-    positionDisturbance_
-    (
-        getNonNegativeOrDefault(dict, "positionDisturbance", 0.3, "-")
-    ),
+    positionDisturbance_(0),
     angleDisturbance_
     (
         getInRangeOrDefault(dict, "angleDisturbance", 0, 0, 180, "deg")
@@ -62,6 +62,14 @@ Foam::rbd::loadingScheme::loadingScheme
         badEntry(dict, "spacing", spacing_, "a number >= 1 [-]");
     }
 
+    // Default offset 0.3 dp, or the largest the scheme's bounds allow
+    // where that is less (a narrow tube, the layers' lattice pitch)
+    positionDisturbance_ = getNonNegativeOrDefault
+    (
+        dict, "positionDisturbance",
+        min(0.3, max(largestDisturbance(), 0.0)), "-"
+    );
+
     releaseHeight_ = getPositiveOrDefault
     (
         dict, "releaseHeight", container.height() - rb_, "m"
@@ -78,18 +86,23 @@ Foam::rbd::loadingScheme::loadingScheme
         );
     }
 
-    const scalar maxOffset = R_ - rb_;
-    columnOffset_ = getNonNegativeOrDefault
+    // Wall, for a release point on the axis (column, and the layers'
+    // central point): delta <= R - r_b
+    if
     (
-        dict, "columnOffset", scheme_ == "column" ? 0 : 0.5*maxOffset, "m"
-    );
-    if (columnOffset_ > maxOffset)
+        (scheme_ == "column" || scheme_ == "layers")
+     && positionDisturbance_*dp_ > (R_ - rb_)*(1 + boundTolerance)
+    )
     {
         badEntry
         (
-            dict, "columnOffset", columnOffset_,
-            "a number in [0, " + Foam::name(maxOffset)
-          + "] (tube radius - pellet bounding radius) [m]"
+            dict, "positionDisturbance", positionDisturbance_,
+            "a number in [0, " + Foam::name((R_ - rb_)/dp_) + "] [-] "
+            "for scheme " + scheme_ + ": a pellet released up to "
+            "positionDisturbance dp from the axis must clear the wall, "
+            "(R - r_b)/dp = (" + Foam::name(R_) + " - " + Foam::name(rb_)
+          + ")/" + Foam::name(dp_) + " (tube radius R, pellet bounding "
+            "radius r_b, dp in m)"
         );
     }
 
@@ -109,6 +122,10 @@ Foam::rbd::loadingScheme::loadingScheme
                )
             << endl;
     }
+    else if (scheme_ != "column" && scheme_ != "layers")
+    {
+        readColumnOffset(dict);
+    }
 
     const scalar s = columnOffset_;
     const scalar z = releaseHeight_;
@@ -118,7 +135,13 @@ Foam::rbd::loadingScheme::loadingScheme
     }
     else if (scheme_ == "layers")
     {
-        columns_ = layerPoints(clearance(), R_ - rb_, z);
+        // Points within R - r_b - delta: the disturbed pellets clear the
+        // wall
+        columns_ = layerPoints
+        (
+            clearance(), max(R_ - rb_ - positionDisturbance_*dp_, 0.0), z
+        );
+        checkLayerSpacing(dict);
     }
     else if (scheme_ == "twoColumns")
     {
@@ -130,6 +153,131 @@ Foam::rbd::loadingScheme::loadingScheme
         ({
             point(s, 0, z), point(0, s, z), point(-s, 0, z), point(0, -s, z)
         });
+    }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::rbd::loadingScheme::largestDisturbance() const
+{
+    // The bounds of the Description solved for delta = positionDisturbance
+    // dp: the wall for a point on the axis, R - r_b; where the columns'
+    // bounds on s meet, (R - (1 + k) r_b)/(1 + k); the lattice pitch
+    if (scheme_ == "twoColumns" || scheme_ == "fourColumns")
+    {
+        const scalar k =
+            scheme_ == "twoColumns" ? 1 : Foam::sqrt(2.0);
+        return (R_ - (1 + k)*rb_)/((1 + k)*dp_);
+    }
+    else if (scheme_ == "layers")
+    {
+        return min(R_ - rb_, 0.5*clearance() - rb_)/dp_;
+    }
+    return (R_ - rb_)/dp_;
+}
+
+
+void Foam::rbd::loadingScheme::readColumnOffset(const dictionary& dict)
+{
+    // Neighbouring columns are k s apart (Description)
+    const bool two = (scheme_ == "twoColumns");
+    const scalar k = two ? 1 : Foam::sqrt(2.0);
+    const word kText(two ? "" : "sqrt(2) ");
+    const string onePlusK(two ? "2" : "(1 + sqrt(2))");
+    const scalar delta = positionDisturbance_*dp_;
+    const scalar sMin = k*(rb_ + delta);
+    const scalar sMax = R_ - rb_ - delta;
+    const string tubeText
+    (
+        "tube radius R = " + Foam::name(R_) + " m, pellet bounding radius "
+        "r_b = " + Foam::name(rb_) + " m"
+    );
+
+    // A tube too narrow for the scheme even without a disturbance ...
+    if (R_ < (1 + k)*rb_*(1 - boundTolerance))
+    {
+        badEntry
+        (
+            dict, "scheme", scheme_,
+            "column | layers"
+          + string(!two && R_ >= 2*rb_ ? " | twoColumns" : "")
+          + " in this tube: " + scheme_ + " releases pellets side by side "
+            "and needs R >= " + onePlusK + " r_b = "
+          + Foam::name((1 + k)*rb_) + " m (" + tubeText + ")"
+        );
+    }
+
+    // ... or for its disturbance: the bounds on s cross
+    if (sMin > sMax*(1 + boundTolerance))
+    {
+        badEntry
+        (
+            dict, "positionDisturbance", positionDisturbance_,
+            "a number in [0, "
+          + Foam::name((R_ - (1 + k)*rb_)/((1 + k)*dp_)) + "] [-] for "
+            "scheme " + scheme_ + " in this tube: columnOffset must be at "
+            "least " + kText + "(r_b + positionDisturbance dp) (pellets "
+            "released together from neighbouring columns clear one "
+            "another) and at most R - r_b - positionDisturbance dp (they "
+            "clear the wall), so positionDisturbance <= (R - " + onePlusK
+          + " r_b)/(" + onePlusK + " dp) (" + tubeText + ", dp = "
+          + Foam::name(dp_) + " m)"
+        );
+    }
+
+    columnOffset_ = getNonNegativeOrDefault
+    (
+        dict, "columnOffset", 0.5*(sMin + sMax), "m"
+    );
+    if
+    (
+        columnOffset_ < sMin*(1 - boundTolerance)
+     || columnOffset_ > sMax*(1 + boundTolerance)
+    )
+    {
+        badEntry
+        (
+            dict, "columnOffset", columnOffset_,
+            "a number in [" + Foam::name(sMin) + ", " + Foam::name(sMax)
+          + "] [m] for scheme " + scheme_ + " with positionDisturbance "
+          + Foam::name(positionDisturbance_) + ": at least " + kText
+          + "(r_b + positionDisturbance dp), so that pellets released "
+            "together from neighbouring columns cannot overlap, and at "
+            "most R - r_b - positionDisturbance dp, so that none reaches "
+            "the wall (" + tubeText + ", dp = " + Foam::name(dp_) + " m)"
+        );
+    }
+}
+
+
+void Foam::rbd::loadingScheme::checkLayerSpacing
+(
+    const dictionary& dict
+) const
+{
+    const scalar delta = positionDisturbance_*dp_;
+    if
+    (
+        columns_.size() > 1
+     && clearance() < 2*(rb_ + delta)*(1 - boundTolerance)
+    )
+    {
+        const scalar D = max(dp_, 2*rb_);
+        badEntry
+        (
+            dict, "spacing", spacing_,
+            "a number >= " + Foam::name(2*(rb_ + delta)/D) + " [-] for "
+            "scheme layers with positionDisturbance "
+          + Foam::name(positionDisturbance_) + ", or a positionDisturbance "
+            "of at most " + Foam::name(max(largestDisturbance(), 0.0))
+          + " with this spacing: neighbouring points of the lattice, "
+            "spacing max(dp, 2 r_b) apart, release pellets together, up to "
+            "positionDisturbance dp off their points, whose bounding "
+            "spheres must not overlap: spacing max(dp, 2 r_b) >= "
+            "2 (r_b + positionDisturbance dp) (pellet bounding radius r_b "
+            "= " + Foam::name(rb_) + " m, dp = " + Foam::name(dp_) + " m)"
+        );
     }
 }
 
@@ -190,7 +338,11 @@ void Foam::rbd::loadingScheme::nextPose
 {
     std::uniform_real_distribution<double> U(0, 1);
 
-    // Horizontal disturbance: uniform in a disc, kept inside the tube
+    // Horizontal disturbance: uniform in a disc, which the bounds keep
+    // within R - r_b of the axis (Description). A centre that rounding
+    // (or a value within boundTolerance of a bound) puts at R - r_b is
+    // pulled back by 1e-9 of it; one beyond by more is a bug, not a
+    // release
     x = columns_[c];
     if (positionDisturbance_ > 0)
     {
@@ -200,6 +352,14 @@ void Foam::rbd::loadingScheme::nextPose
 
         const scalar rho = tube::axialDistance(x);
         const scalar rhoMax = (R_ - rb_)*(1 - 1e-9);
+        if (rho > (R_ - rb_)*(1 + 1e-9))
+        {
+            FatalErrorInFunction
+                << "A pellet of the " << scheme_ << " scheme would be "
+                << "released " << rho << " m from the axis, beyond R - r_b "
+                << "= " << R_ - rb_ << " m: the loading's bounds do not "
+                << "hold (a bug)" << abort(FatalError);
+        }
         if (rho > rhoMax)
         {
             x.x() *= rhoMax/rho;

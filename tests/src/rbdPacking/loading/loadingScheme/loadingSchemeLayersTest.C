@@ -1,8 +1,8 @@
 // Unit tests for the layers scheme of src/rbdPacking/loading/loadingScheme:
 // its release points against their definition (a hexagonal lattice of pitch
-// 'spacing' bounding diameters through the axis, every point within R - r_b,
-// nearest the axis first), counted against the lattice points in the disc
-// found by brute force
+// 'spacing' bounding diameters through the axis, every point within
+// R - r_b - positionDisturbance dp, nearest the axis first), counted against
+// the lattice points in the disc found by brute force
 
 #include <gtest/gtest.h>
 #include "loadingScheme.H"
@@ -68,8 +68,9 @@ TEST(loadingSchemeLayers, latticePointsInTheDisc)
 
 TEST(loadingSchemeLayers, schemeReleasesFromEveryLatticePoint)
 {
-    // Spheres of 10 mm in a 50 mm tube, spacing 1.2: pitch 12 mm, centres
-    // within 20 mm of the axis
+    // Spheres of 10 mm in a 50 mm tube, spacing 1.2: pitch 12 mm, so the
+    // default positionDisturbance is (6 - 5)/10 = 0.1 (the pitch's bound),
+    // and the points lie within R - r_b - 1 mm = 19 mm of the axis
     const rbd::tube tube50(0.05, 0.3, 0.5, 0.5);
     autoPtr<rbd::pelletShape> sphere
     (
@@ -82,7 +83,7 @@ TEST(loadingSchemeLayers, schemeReleasesFromEveryLatticePoint)
     (
         parseLayers("scheme layers; spacing 1.2;"), tube50, sphere()
     );
-    EXPECT_EQ(layers.nColumns(), bruteCount(0.012, 0.02));
+    EXPECT_EQ(layers.nColumns(), bruteCount(0.012, 0.019));
     EXPECT_EQ(layers.nColumns(), 7);     // the axis and a ring of six
     for (label c = 0; c < layers.nColumns(); ++c)
     {
@@ -90,6 +91,7 @@ TEST(loadingSchemeLayers, schemeReleasesFromEveryLatticePoint)
     }
 
     // A tube barely wider than the pellet: the axis alone, as a column
+    // (and a default positionDisturbance of (R - r_b)/dp = 0.025)
     const rbd::tube narrow(0.0105, 0.3, 0.5, 0.5);
     const rbd::loadingScheme single
     (

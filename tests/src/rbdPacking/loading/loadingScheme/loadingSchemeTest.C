@@ -132,21 +132,24 @@ TEST(loadingScheme, twoAndFourColumnsAtTheirOffset)
     const scalar R = 0.02;
     const scalar z = 0.07;
 
-    // Default offset (R - r_b)/2, columns on opposite sides of the axis
+    // Default offset midway between r_b + delta and R - r_b - delta
+    // (delta = 0.3 dp, the default): R/2; columns on opposite sides of
+    // the axis
     {
         rbd::loadingScheme L
         (
             parse("scheme twoColumns; releaseHeight 0.07;"), tube40, s()
         );
         ASSERT_EQ(L.nColumns(), 2);
-        const scalar off = 0.5*(R - rb);
+        const scalar off = 0.5*R;
         EXPECT_NEAR(mag(L.column(0) - point(off, 0, z)), 0, 1e-15);
         EXPECT_NEAR(mag(L.column(1) - point(-off, 0, z)), 0, 1e-15);
         EXPECT_NEAR(L.releaseHeight(), z, 1e-15);
     }
 
     // Given offset: four columns, 90 degrees apart, all at that distance
-    // from the axis and at the release height
+    // from the axis and at the release height (12 mm: the largest with
+    // delta 3 mm, R - r_b - delta)
     {
         rbd::loadingScheme L
         (
@@ -164,13 +167,14 @@ TEST(loadingScheme, twoAndFourColumnsAtTheirOffset)
         }
     }
 
-    // The largest offset: a pellet there touches the wall
+    // The largest offset without a disturbance: a pellet there touches
+    // the wall
     {
         rbd::loadingScheme L
         (
             parse
             (
-                "scheme twoColumns; columnOffset "
+                "scheme twoColumns; positionDisturbance 0; columnOffset "
               + std::to_string(R - rb) + ";"
             ),
             tube40, s()
@@ -220,7 +224,8 @@ TEST(loadingScheme, positionDisturbanceUniformInADisc)
         tube40, s()
     );
 
-    // Far from the wall: (R - r_b)/2 + 0.3 dp = 10.5 mm < 15 mm, no clip
+    // Off the wall: the default offset R/2 + 0.3 dp = 13 mm < R - r_b =
+    // 15 mm
     const label n = 20000;
     label inner = 0;
     vector mean(Zero);
@@ -250,40 +255,6 @@ TEST(loadingScheme, positionDisturbanceUniformInADisc)
     EXPECT_LT(mag(mean), 5*0.5*pd*dp/std::sqrt(scalar(n)));
     // The disc is filled out to its radius
     EXPECT_GT(largest, 0.99*pd*dp);
-}
-
-
-TEST(loadingScheme, positionDisturbanceKeptInsideTheTube)
-{
-    // Columns at the wall (offset R - r_b), offsets up to 1 dp: about
-    // half of the draws point outward and are pulled back
-    autoPtr<rbd::pelletShape> s = sphere();
-    const scalar rb = s->boundingRadius();
-    const scalar R = 0.02;
-    rbd::loadingScheme L
-    (
-        parse
-        (
-            "scheme fourColumns; positionDisturbance 1; columnOffset "
-          + std::to_string(R - rb) + ";"
-        ),
-        tube40, s()
-    );
-    label clipped = 0;
-    for (label i = 0; i < 4000; ++i)
-    {
-        const label c = i % 4;
-        point x;
-        quaternion q;
-        L.nextPose(c, x, q);
-        const scalar rho = rbd::tube::axialDistance(x);
-        ASSERT_LE(rho, R - rb) << i;
-        if (rho > (R - rb)*(1 - 1e-6))
-        {
-            ++clipped;
-        }
-    }
-    EXPECT_GT(clipped, 1000);
 }
 
 
@@ -334,12 +305,14 @@ TEST(loadingScheme, angleDisturbanceUniformInAngleAboutARandomAxis)
 
 TEST(loadingScheme, sameSeedSamePosesAnotherSeedOthers)
 {
+    // Four columns of these cylinders need R >= (1 + sqrt(2)) r_b = 27 mm
+    const rbd::tube tube100(0.1, 0.1, 0.6, 0.6);
     autoPtr<rbd::pelletShape> s = cylinder();
     const std::string d =
         "scheme fourColumns; positionDisturbance 0.5; angleDisturbance 40;";
-    rbd::loadingScheme A(parse(d + " seed 11;"), tube40, s());
-    rbd::loadingScheme B(parse(d + " seed 11;"), tube40, s());
-    rbd::loadingScheme C(parse(d + " seed 12;"), tube40, s());
+    rbd::loadingScheme A(parse(d + " seed 11;"), tube100, s());
+    rbd::loadingScheme B(parse(d + " seed 11;"), tube100, s());
+    rbd::loadingScheme C(parse(d + " seed 12;"), tube100, s());
     label differ = 0;
     for (label i = 0; i < 100; ++i)
     {
@@ -402,7 +375,8 @@ TEST(loadingSchemeDeath, entriesOutsideTheirRangeNameTheEntry)
         ::testing::ExitedWithCode(1),
         "Bad entry 'spacing 0.9;'(.|\n)*a number >= 1"
     );
-    // columnOffset above R - r_b = 15 mm
+    // columnOffset above R - r_b - 0.3 dp = 12 mm (loadingSchemeBoundsTest:
+    // every bound)
     EXPECT_EXIT
     (
         rbd::loadingScheme
@@ -410,7 +384,8 @@ TEST(loadingSchemeDeath, entriesOutsideTheirRangeNameTheEntry)
             parse("scheme twoColumns; columnOffset 0.016;"), tube40, s()
         ),
         ::testing::ExitedWithCode(1),
-        "Bad entry 'columnOffset 0.016;'(.|\n)*a number in \\[0, 0.015\\]"
+        "Bad entry 'columnOffset 0.016;'(.|\n)*a number in "
+        "\\[0.008, 0.012\\]"
     );
     // releaseHeight at most H - r_b = 95 mm
     EXPECT_EXIT
