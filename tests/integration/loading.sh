@@ -16,8 +16,9 @@
 # Description), released clear of the wall and of one another.
 #
 # Packing cases: the whole run, twice: settled, every vertex of pellets.stl
-# in the tube, largest overlap below 0.5 % dp, the same pellets.csv from the
-# same dictionary and seed (bit for bit), another seed another bed.
+# in the tube (to its facets' offset), largest overlap below 0.5 % dp, the
+# same pellets.csv from the same dictionary and seed (bit for bit), another
+# seed another bed.
 #
 # Usage: bash tests/integration/loading.sh <case>    (after etc/bashrc)
 #------------------------------------------------------------------------------
@@ -204,8 +205,11 @@ twoColumnsPack|fourColumnsPack)
         "$tmp/a/postProcessing/rbdPackBed/pellets.csv" \
         "$tmp/a/constant/triSurface/pellets.stl" > "$tmp/geometry" 2>/dev/null
     geo() { awk -v k="$1" '$1 == k {print $2}' "$tmp/geometry"; }
-    check "every vertex inside the tube (largest radius $(geo maxRho) m) and above the floor (lowest $(geo minZ) m), to 0.1 % dp" \
-        "[ \"$(geo pellets)\" = 8 ] && le $(geo maxRho) 0.02501 && le -1e-5 $(geo minZ)"
+    # (to 0.1 % dp plus the offset of pellets.stl's volume-true facets,
+    # at most 1.3 % of r = 0.65 % dp for the 16-gon of these 200-face
+    # cylinders: measured 0.58 and 0.65 % dp)
+    check "every vertex inside the tube (largest radius $(geo maxRho) m) and above the floor (lowest $(geo minZ) m), to 0.8 % dp" \
+        "[ \"$(geo pellets)\" = 8 ] && le $(geo maxRho) 0.02508 && le -8e-5 $(geo minZ)"
     pack "$tmp/b"
     check "same dictionary and seed: the same pellets.csv ($(cat $tmp/b.time))" \
         "cmp -s $tmp/a/postProcessing/rbdPackBed/pellets.csv $tmp/b/postProcessing/rbdPackBed/pellets.csv"

@@ -9,7 +9,7 @@
 #     0.5 % dp, the limit of the mesh stability suite and the soak (docs/soak.md);
 #   - containment: every vertex of pellets.stl within the tube (radius R,
 #     floor z = 0) to 0.1 % dp (ten times contactTolerance, the gap the
-#     overlap correction leaves);
+#     overlap correction leaves) plus 2 % dp for the volume-true facets;
 #   - pellets.stl is the pellet placed at the poses of pellets.csv: every
 #     pellet's vertices, taken back to the body frame by its pose, are
 #     pellet 0's to 1e-6 dp; the body mesh lies within the shape's
@@ -17,7 +17,8 @@
 #     every vertex distance from the centre of mass equals the file's,
 #     scaled: the same rigid body);
 #   - bedHeight not below the highest vertex;
-#   - bedPorosity = 1 - n V/(pi R^2 bedHeight) to 1e-6;
+#   - bedPorosity = 1 - n V/(pi R^2 bedHeight) to 1e-6, V the exact
+#     volume (pellets.stl's volume-true pellet has it);
 #   - bulkPorosity in the case's range (shapes.cases says why).
 # Prints the measured values and the run's time.
 #
@@ -103,16 +104,25 @@ awk -F, -f "$here/lib/bedGeometry.awk" -v radii="$tmp/bodyRadii" \
     "$out/pellets.csv" "$stl" > "$tmp/geometry"
 geo() { awk -v k="$1" '$1 == k {print $2}' "$tmp/geometry"; }
 tol="$(awk -v d=$dp 'BEGIN {print 1e-3*d}')"
+# pellets.stl holds the volume-true facets, which stand out of the true
+# surface by their offset (pelletMeshes.H): at these coarse meshes (300
+# faces) up to 1.3 % dp, measured beyond the wall and below the floor:
+# trilobe 1.2 and 1.3 % dp (lobe arcs of few segments), holes 0.64 %, ring
+# 0.65 %; so the STL's containment is checked to tol + 2 % dp (to tol
+# while the STL held the contact meshes)
+stlTol="$(awk -v d=$dp 'BEGIN {print 2.1e-2*d}')"
 check "pellets.stl holds the $n pellets of pellets.csv" \
     "[ \"$(geo pellets)\" = $n ] && [ -z \"$(geo error)\" ]"
-check "every vertex inside the tube: largest radius $(geo maxRho) m, R = $R m" \
-    "le $(geo maxRho) $(awk -v r=$R -v t=$tol 'BEGIN {print r + t}')"
-check "every vertex above the floor: lowest at $(geo minZ) m" \
-    "le -$tol $(geo minZ)"
+check "every vertex inside the tube: largest radius $(geo maxRho) m, R = $R m (+ 2.1 % dp)" \
+    "le $(geo maxRho) $(awk -v r=$R -v t=$stlTol 'BEGIN {print r + t}')"
+check "every vertex above the floor: lowest at $(geo minZ) m (- 2.1 % dp)" \
+    "le -$stlTol $(geo minZ)"
 check "every pellet of pellets.stl is pellet 0 at its pose (largest deviation $(geo maxPoseError) m)" \
     "le $(geo maxPoseError) $(awk -v d=$dp 'BEGIN {print 1e-6*d}')"
-check "bedHeight $(get bedHeight) m not below the highest vertex $(geo maxZ) m" \
-    "le $(geo maxZ) $(get bedHeight)"
+# (pellets.stl's volume-true facets reach beyond the true surface, whose
+# top bedHeight is, by their offset)
+check "bedHeight $(get bedHeight) m not below the highest vertex $(geo maxZ) m (to 2.1 % dp)" \
+    "le $(geo maxZ) $(awk -v h=$(get bedHeight) -v t=$stlTol 'BEGIN {print h + t}')"
 if [ "$case" = stl ]
 then
     check "the body mesh is the file's pellet: vertex distances from the centre of mass" \
@@ -120,8 +130,11 @@ then
     check "volumeEquivalentDiameter $(get volumeEquivalentDiameter) is the file's dpv $dp" \
         "awk -v a=$(get volumeEquivalentDiameter) -v b=$dp 'BEGIN {exit !(a > b*(1 - 1e-6) && a < b*(1 + 1e-6))}'"
 fi
-check "body mesh within r_b = $rb m and within 1 % of it (largest vertex distance $(geo bodyMaxR) m)" \
-    "awk -v a=$(geo bodyMaxR) -v b=$rb 'BEGIN {exit !(a > b*(1 - 1e-2) && a < b*(1 + 1e-6))}'"
+# (the volume-true facets of pellets.stl: beyond r_b by their offset only,
+# at most that of a 16-gon, the coarsest circle: r' = 1.013 r; measured
+# 0.65 % of r_b for the ring of 300 faces; the STL pellet is its own mesh)
+check "body mesh within r_b = $rb m (+ 1.3 %) and within 1 % of it (largest vertex distance $(geo bodyMaxR) m)" \
+    "awk -v a=$(geo bodyMaxR) -v b=$rb 'BEGIN {exit !(a > b*(1 - 1e-2) && a < b*(1 + 1.3e-2))}'"
 
 [ "$volume" = mesh ] && volume="$(geo volume)"
 eps="$(get bedPorosity)"

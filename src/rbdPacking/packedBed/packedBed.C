@@ -1480,10 +1480,19 @@ void Foam::rbd::packedBed::write() const
         out.writeProfiles(H, radialBins_, axialBins_)
     );
     const scalar eps = analysis.get<scalar>("bulkPorosity");
-    // Pellet surfaces with the contact treatment at the simulation's own
-    // touching contacts
-    const label nTreated =
-        writeCase ? out.writeSTL(caseSettings, w.contacts()) : 0;
+    // Pellet surfaces (volume-true) with the contact treatment at the
+    // simulation's own touching contacts, and the porosity they hold
+    label nTreated = 0;
+    scalar stlEps = -1;
+    if (writeCase)
+    {
+        const List<triMesh> surfaces
+        (
+            out.pelletSurfaces(caseSettings, w.contacts(), nTreated)
+        );
+        out.writeSTL(surfaces, caseSettings.binarySTL());
+        stlEps = out.surfacePorosity(surfaces, H);
+    }
 
     dictionary summary;
     summary.add("pellets", w.bodies().size());
@@ -1501,6 +1510,10 @@ void Foam::rbd::packedBed::write() const
         tube_.diameter()/shape.volumeEquivalentDiameter()
     );
     summary.add("bulkPorosity", eps);
+    if (writeCase)
+    {
+        summary.add("stlPorosity", stlEps);
+    }
     summary.add("porosityHeight", H);
     // The published bulk porosities for this shape at N = dt/dpv
     {
@@ -1533,7 +1546,7 @@ void Foam::rbd::packedBed::write() const
     summary.add
     (
         "bedPorosity",
-        1 - w.bodies().size()*shape.volume()
+        1 - w.bodies().size()*shape.exactVolume()
        /(pi*sqr(tube_.radius())*bedHeight())
     );
     summary.add("maxOverlap", w.stats().maxOverlap);
@@ -1557,8 +1570,18 @@ void Foam::rbd::packedBed::write() const
     out.writeOrientation(H, 18, summary);
     out.writeSummary(summary);
 
-    Info<< "Bulk porosity below " << H << " m: " << eps << nl
-        << "Largest interpenetration during the run: "
+    Info<< "Bulk porosity below " << H << " m: " << eps << nl;
+    if (writeCase)
+    {
+        Info<< "Porosity of pellets.stl below " << H << " m: " << stlEps
+            << " (volume-true facets";
+        if (caseSettings.contactTreatment() != "none")
+        {
+            Info<< ", " << caseSettings.contactTreatment();
+        }
+        Info<< ")" << nl;
+    }
+    Info<< "Largest interpenetration during the run: "
         << w.stats().maxOverlap << " m ("
         << 100*w.stats().maxOverlap/shape.diameter() << " % of dp)" << nl
         << "Wrote " << out.directory();

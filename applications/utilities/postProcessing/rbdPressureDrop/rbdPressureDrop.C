@@ -19,7 +19,10 @@ Description
     - the whole bed, floor to the top of the highest pellet, at the
       summary's bedPorosity (the function objects pBedBottom, pBedTop).
     Prints the porosity each used and whether the case lies in each
-    correlation's range (Re_p, Nv = dt/dpv, porosity, shape).
+    correlation's range (Re_p, Nv = dt/dpv, porosity, shape); and beside
+    the summary's bulkPorosity and stlPorosity the porosity of the fluid
+    mesh itself, its volume between the planes over pi D^2/4 L
+    (planeSection::volumeBelow), so that one sees what the CFD saw.
 
     Reads postProcessing/rbdPackBed/summary, constant/transportProperties,
     system/controlDict, the last values of the function objects
@@ -74,8 +77,9 @@ int main(int argc, char *argv[])
         args.getOrDefault<word>("shape", word::null)
     );
 
-    // The packed section's top plane, sampled on the latest solution
-    if (comparison.hasPackedSection())
+    // The fluid mesh's volume in both sections (its porosity, what the
+    // CFD saw), and the packed section's top plane, sampled on the latest
+    // solution
     {
         #include "createTime.H"
         const instantList times(runTime.times());
@@ -83,19 +87,49 @@ int main(int argc, char *argv[])
         (
             runTime.path()/times.last().name()/"p"
         );
-        if (times.last().value() > 0 && isFile(pFile))
+        const bool solved = times.last().value() > 0 && isFile(pFile);
+        if (solved)
         {
             runTime.setTime(times.last(), times.size() - 1);
-            const polyMesh mesh
+        }
+        if (!isDir(runTime.path()/"constant/polyMesh"))
+        {
+            FatalErrorInFunction
+                << "No mesh in " << runTime.path()/"constant/polyMesh"
+                << ": rbdPressureDrop compares a meshed and solved case"
+                << " (blockMesh, snappyHexMesh -overwrite, simpleFoam)"
+                << exit(FatalError);
+        }
+        const polyMesh mesh
+        (
+            IOobject
             (
-                IOobject
-                (
-                    polyMesh::defaultRegion,
-                    runTime.timeName(),
-                    runTime,
-                    IOobject::MUST_READ
-                )
+                polyMesh::defaultRegion,
+                runTime.timeName(),
+                runTime,
+                IOobject::MUST_READ
+            )
+        );
+
+        const auto below = [&mesh](const scalar z)
+        {
+            return rbd::planeSection::volumeBelow
+            (
+                mesh.points(), mesh.faces(), mesh.nInternalFaces(), z
             );
+        };
+        const scalar z0 = comparison.bottomHeight();
+        const scalar V0 = below(z0);
+        comparison.setFluidVolumes
+        (
+            below(z0 + comparison.length()) - V0,
+            comparison.hasPackedSection()
+          ? below(comparison.packedTopHeight()) - V0
+          : 0
+        );
+
+        if (comparison.hasPackedSection() && solved)
+        {
             const scalar z = comparison.packedTopHeight();
             scalar area = 0;
             const scalar p = rbd::planeSection::areaAverage
@@ -113,7 +147,7 @@ int main(int argc, char *argv[])
                 << area << " m^2): " << p << " m^2/s^2" << nl << endl;
             comparison.setPackedTopPressure(p);
         }
-        else
+        else if (comparison.hasPackedSection())
         {
             Info<< "No solution (p of a time > 0) in " << runTime.path()
                 << ": the packed section is not measured" << nl << endl;

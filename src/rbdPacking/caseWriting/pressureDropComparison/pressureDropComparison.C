@@ -140,7 +140,10 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
     bulkPorosity_(-1),
     porosityHeight_(-1),
     zBottom_(0),
-    pPackedTop_(std::numeric_limits<scalar>::quiet_NaN())
+    pPackedTop_(std::numeric_limits<scalar>::quiet_NaN()),
+    stlPorosity_(-1),
+    meshPorosity_(std::numeric_limits<scalar>::quiet_NaN()),
+    packedMeshPorosity_(std::numeric_limits<scalar>::quiet_NaN())
 {
     const dictionary summary
     (
@@ -196,6 +199,8 @@ Foam::rbd::pressureDropComparison::pressureDropComparison
         bulkPorosity_ =
             getInRangeOrDefault(summary, "bulkPorosity", -1, 0, 1, "-");
     }
+    // pellets.stl's (summaries of beds before it have none)
+    stlPorosity_ = getInRangeOrDefault(summary, "stlPorosity", -1, -1, 1, "-");
 
     const dictionary transport
     (
@@ -333,6 +338,36 @@ void Foam::rbd::pressureDropComparison::setPackedTopPressure(const scalar p)
             << s << " m/s^2 (kinematic) is not a positive number: has"
             << " simpleFoam converged?" << exit(FatalError);
     }
+}
+
+
+void Foam::rbd::pressureDropComparison::setFluidVolumes
+(
+    const scalar whole,
+    const scalar packed
+)
+{
+    const scalar area =
+        0.25*constant::mathematical::pi*sqr(tubeDiameter_);
+    meshPorosity_ = whole/(area*length_);
+    if (hasPackedSection())
+    {
+        packedMeshPorosity_ = packed/(area*porosityHeight_);
+    }
+    if (!(meshPorosity_ > 0 && meshPorosity_ <= 1 + 1e-3))
+    {
+        FatalErrorInFunction
+            << "The fluid mesh holds " << whole << " m^3 between the planes "
+            << length_ << " m apart in the tube of diameter "
+            << tubeDiameter_ << " m: a porosity of " << meshPorosity_
+            << ", not in (0, 1]; is it this case's mesh?" << exit(FatalError);
+    }
+}
+
+
+bool Foam::rbd::pressureDropComparison::meshPorosityMeasured() const
+{
+    return std::isfinite(meshPorosity_);
 }
 
 
@@ -497,13 +532,25 @@ Foam::dictionary Foam::rbd::pressureDropComparison::results() const
     d.add("pelletDiameter", boundingDiameter_);
     d.add("diameterRatio", diameterRatio());
     d.add("volumeEquivalentDiameterRatio", volumeEquivalentDiameterRatio());
+    if (meshPorosityMeasured())
+    {
+        d.add("meshPorosity", meshPorosity_);
+    }
     if (packedMeasured())
     {
-        d.add
+        dictionary packed
         (
-            "packedSection",
             sectionResults(bulkPorosity_, packedTopHeight(), pPackedTop_)
         );
+        if (stlPorosity_ >= 0)
+        {
+            packed.add("stlPorosity", stlPorosity_);
+        }
+        if (std::isfinite(packedMeshPorosity_))
+        {
+            packed.add("meshPorosity", packedMeshPorosity_);
+        }
+        d.add("packedSection", packed);
     }
     // The whole bed's verdicts, with the reasons
     dictionary ranges;
@@ -577,6 +624,24 @@ void Foam::rbd::pressureDropComparison::report(Ostream& os) const
         os, "Whole bed, floor to the top of the highest pellet",
         "bedPorosity of the summary", porosity_, zBottom_ + length_, pTop_
     );
+
+    // What the CFD saw, beside the porosities of the correlations
+    if (meshPorosityMeasured())
+    {
+        if (hasPackedSection() && std::isfinite(packedMeshPorosity_))
+        {
+            os  << "    Porosity of the packed section: bulkPorosity "
+                << bulkPorosity_ << " (exact pellets)";
+            if (stlPorosity_ >= 0)
+            {
+                os  << ", stlPorosity " << stlPorosity_ << " (pellets.stl)";
+            }
+            os  << ", fluid mesh " << packedMeshPorosity_
+                << " (its cell volumes)" << nl;
+        }
+        os  << "    Porosity of the whole bed: bedPorosity " << porosity_
+            << ", fluid mesh " << meshPorosity_ << nl;
+    }
 
     // The verdicts at the porosity of the section given first
     const scalar eps = packedMeasured() ? bulkPorosity_ : porosity_;

@@ -9,10 +9,12 @@
 #include "sphereSolidSet.H"
 #include "bedVoidage.H"
 #include "meshSolidSet.H"
+#include "scaledSolidSet.H"
 #include "orientationStatistics.H"
 #include "contactGeometry.H"
 #include "stlIO.H"
 #include "OStringStream.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -135,6 +137,10 @@ Foam::dictionary Foam::rbd::bedOutput::writeProfiles
         centres[i] = bodies_[i].x();
         rotations[i] = bodies_[i].R();
     }
+    // Spheres exact; other pellets: their mesh's volumes and areas scaled
+    // to the exact volume (whole pellets exact, cut ones the mesh's
+    // fraction of it: scaledSolidSet)
+    autoPtr<solidSet> polyhedra;
     autoPtr<solidSet> solids;
     if (shape_.isSphere())
     {
@@ -142,7 +148,14 @@ Foam::dictionary Foam::rbd::bedOutput::writeProfiles
     }
     else
     {
-        solids.reset(new meshSolidSet(shape_.mesh(), centres, rotations));
+        polyhedra.reset(new meshSolidSet(shape_.mesh(), centres, rotations));
+        solids.reset
+        (
+            new scaledSolidSet
+            (
+                polyhedra(), shape_.exactVolume()/shape_.mesh().volume()
+            )
+        );
     }
     // Bulk porosity and radial profile below H; the axial profile from
     // the floor to the bed top (the top of the highest pellet, as
@@ -201,7 +214,7 @@ void Foam::rbd::bedOutput::writeSTL
             << "Pellet scale must be > 0, not " << scale << exit(FatalError);
     }
     // Body frame: the centre of mass at the origin
-    triMesh body(shape_.mesh());
+    triMesh body(shape_.volumeTrueMesh());
     if (scale != 1)
     {
         body.scale(scale);
@@ -228,7 +241,7 @@ Foam::List<Foam::rbd::triMesh> Foam::rbd::bedOutput::pelletSurfaces
 ) const
 {
     const word& treatment = settings.contactTreatment();
-    triMesh body(shape_.mesh());
+    triMesh body(shape_.volumeTrueMesh());
     if (settings.pelletScale() != 1)
     {
         body.scale(settings.pelletScale());
@@ -301,18 +314,46 @@ Foam::label Foam::rbd::bedOutput::writeSTL
 {
     label nTreated = 0;
     const List<triMesh> surfaces(pelletSurfaces(settings, contacts, nTreated));
+    writeSTL(surfaces, settings.binarySTL());
+    return nTreated;
+}
 
+
+void Foam::rbd::bedOutput::writeSTL
+(
+    const UList<triMesh>& surfaces,
+    const bool binary
+) const
+{
     mkDir(stl_.path());
     const fileName tmp(stl_ + ".tmp");
     {
-        stlWriter writer(tmp, settings.binarySTL(), "pellets");
+        stlWriter writer(tmp, binary, "pellets");
         for (const triMesh& m : surfaces)
         {
             writer.write(m);
         }
     }
     commit(tmp, stl_);
-    return nTreated;
+}
+
+
+Foam::scalar Foam::rbd::bedOutput::surfacePorosity
+(
+    const UList<triMesh>& surfaces,
+    const scalar H
+) const
+{
+    // Each closed surface as a one-pellet meshSolidSet in place: its
+    // volume in 0 <= z <= H, exact for the polyhedron
+    const pointField origin(1, Zero);
+    const tensorField identity(1, tensor::I);
+    scalar V = 0;
+    for (const triMesh& m : surfaces)
+    {
+        V += meshSolidSet(m, origin, identity).volume(0, 0, H);
+    }
+    return 1 - V/(constant::mathematical::pi*sqr(tube_.radius())*H);
 }
 
 
@@ -357,7 +398,15 @@ Foam::string Foam::rbd::bedOutput::summaryUnit(const word& key)
         {"volumeEquivalentDiameter", "[m] dpv, of the sphere of equal volume"},
         {"diameterRatio", "[-] N = dt/dp"},
         {"volumeEquivalentDiameterRatio", "[-] Nv = dt/dpv"},
-        {"bulkPorosity", "[-] below porosityHeight"},
+        {
+            "bulkPorosity",
+            "[-] below porosityHeight, of the exact (curved) pellets"
+        },
+        {
+            "stlPorosity",
+            "[-] below porosityHeight, of the solids in pellets.stl (with "
+            "the contact treatment)"
+        },
         {"porosityHeight", "[m] top of the bulk porosity's slab"},
         {
             "bulkPorosityCorrelations",

@@ -383,7 +383,7 @@ void Foam::rbd::fillSeries::writeFrame
 
 void Foam::rbd::fillSeries::writeGlyph() const
 {
-    const triMesh& m = shape_.mesh();
+    const triMesh& m = shape_.volumeTrueMesh();
     const auto glyph = [&](std::ostream& os)
     {
         os  << std::setprecision(poseDigits)

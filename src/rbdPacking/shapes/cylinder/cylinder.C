@@ -84,4 +84,19 @@ Foam::rbd::triMesh Foam::rbd::cylinder::buildMesh() const
 }
 
 
+Foam::rbd::triMesh Foam::rbd::cylinder::buildVolumeTrueMesh() const
+{
+    return pelletMeshes::cylinder
+    (
+        d_, h_, faces_, pelletMeshes::facets::volumeTrue
+    );
+}
+
+
+Foam::string Foam::rbd::cylinder::volumeTrueConstruction() const
+{
+    return prismConstruction;
+}
+
+
 // ************************************************************************* //

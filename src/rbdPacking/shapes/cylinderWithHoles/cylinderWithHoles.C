@@ -103,6 +103,25 @@ Foam::rbd::cylinderWithHoles::cylinderWithHoles(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::rbd::cylinderWithHoles::exactVolume() const
+{
+    return 0.25*pi*(sqr(d_) - nHoles_*sqr(dh_))*h_;
+}
+
+
+Foam::rbd::triMesh Foam::rbd::cylinderWithHoles::buildVolumeTrueMesh() const
+{
+    return toBodyFrame
+    (
+        pelletMeshes::cylinderWithHoles
+        (
+            d_, h_, nHoles_, dh_, faces_, 0.5*dc_,
+            pelletMeshes::facets::volumeTrue
+        )
+    );
+}
+
+
 void Foam::rbd::cylinderWithHoles::write(Ostream& os) const
 {
     meshedPellet::write(os);

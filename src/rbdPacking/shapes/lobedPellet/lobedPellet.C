@@ -78,6 +78,25 @@ Foam::scalar Foam::rbd::lobedPellet::crossSectionArea
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::rbd::lobedPellet::exactVolume() const
+{
+    return crossSectionArea(nLobes_, dl_, dc_)*h_;
+}
+
+
+Foam::rbd::triMesh Foam::rbd::lobedPellet::buildVolumeTrueMesh() const
+{
+    return toBodyFrame
+    (
+        pelletMeshes::lobes
+        (
+            nLobes_, dl_, h_, faces_, 0.5*dc_,
+            pelletMeshes::facets::volumeTrue
+        )
+    );
+}
+
+
 void Foam::rbd::lobedPellet::write(Ostream& os) const
 {
     meshedPellet::write(os);

@@ -17,7 +17,9 @@ Foam::rbd::meshedPellet::meshedPellet
     surface_(),
     volume_(0),
     area_(0),
-    inertia_(Zero)
+    inertia_(Zero),
+    toBodyRotation_(tensor::I),
+    toBodyTranslation_(Zero)
 {}
 
 
@@ -30,6 +32,9 @@ void Foam::rbd::meshedPellet::setSurface(const triMesh& mesh)
     volume_ = mp.volume();
     area_ = surface_.area();
     inertia_ = mp.principalMoments();
+    // As massProperties::toPrincipalFrame
+    toBodyRotation_ = mp.principalRotation().T();
+    toBodyTranslation_ = -(toBodyRotation_ & mp.centreOfMass());
 }
 
 

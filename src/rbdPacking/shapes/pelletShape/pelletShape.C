@@ -28,6 +28,10 @@ const Foam::wordList Foam::rbd::pelletShape::commonEntries
 
 const Foam::label Foam::rbd::pelletShape::maxFaces = 200000;
 
+const char* const Foam::rbd::pelletShape::prismConstruction =
+    "volume-true facets, each curved wall's points moved along its radius "
+    "to the area of its curve, flat faces and height exact";
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -43,7 +47,8 @@ Foam::rbd::pelletShape::pelletShape
       ? getLabelOrDefault(dict, "faces", defaultFaces, 20, maxFaces)
       : defaultFaces
     ),
-    mesh_()
+    mesh_(),
+    volumeTrueMesh_()
 {}
 
 
@@ -69,6 +74,16 @@ const Foam::rbd::triMesh& Foam::rbd::pelletShape::mesh() const
         mesh_.reset(new triMesh(buildMesh()));
     }
     return *mesh_;
+}
+
+
+const Foam::rbd::triMesh& Foam::rbd::pelletShape::volumeTrueMesh() const
+{
+    if (!volumeTrueMesh_)
+    {
+        volumeTrueMesh_.reset(new triMesh(buildVolumeTrueMesh()));
+    }
+    return *volumeTrueMesh_;
 }
 
 
@@ -99,6 +114,29 @@ void Foam::rbd::pelletShape::write(Ostream& os) const
     {
         os  << indent << "// meshed with " << n << " triangles" << nl;
     }
+
+    // What the CFD case gets: the polyhedron of pellets.stl, the same
+    // triangles with vertices moved by at most maxMove
+    const scalar V = exactVolume();
+    const pointField& p = mesh().points();
+    const pointField& q = volumeTrueMesh().points();
+    scalar maxMove = 0;
+    forAll(p, i)
+    {
+        maxMove = max(maxMove, mag(q[i] - p[i]));
+    }
+    os  << indent << "// pellets.stl: " << volumeTrueConstruction().c_str()
+        << "; volume " << volumeTrueMesh().volume() << " m^3 = exact "
+        << V << " m^3 (the contact mesh's " << 100*(mesh().volume()/V - 1)
+        << " %); vertices moved by at most " << maxMove << " m ("
+        << 100*maxMove/boundingRadius() << " % of the bounding radius)"
+        << nl;
+}
+
+
+Foam::string Foam::rbd::pelletShape::volumeTrueConstruction() const
+{
+    return "the pellet mesh as given";
 }
 
 

@@ -107,4 +107,19 @@ Foam::rbd::triMesh Foam::rbd::ring::buildMesh() const
 }
 
 
+Foam::rbd::triMesh Foam::rbd::ring::buildVolumeTrueMesh() const
+{
+    return pelletMeshes::ring
+    (
+        d_, di_, h_, faces_, pelletMeshes::facets::volumeTrue
+    );
+}
+
+
+Foam::string Foam::rbd::ring::volumeTrueConstruction() const
+{
+    return prismConstruction;
+}
+
+
 // ************************************************************************* //

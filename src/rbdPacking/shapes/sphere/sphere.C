@@ -80,4 +80,21 @@ Foam::rbd::triMesh Foam::rbd::sphere::buildMesh() const
 }
 
 
+Foam::rbd::triMesh Foam::rbd::sphere::buildVolumeTrueMesh() const
+{
+    return pelletMeshes::sphere
+    (
+        d_, faces_, pelletMeshes::facets::volumeTrue
+    );
+}
+
+
+Foam::string Foam::rbd::sphere::volumeTrueConstruction() const
+{
+    return
+        "volume-true facets, the sphere mesh scaled about its centre by "
+      + Foam::name(mag(volumeTrueMesh().points()[0])/mag(mesh().points()[0]));
+}
+
+
 // ************************************************************************* //

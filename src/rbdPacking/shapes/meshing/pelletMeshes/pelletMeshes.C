@@ -83,6 +83,118 @@ namespace
     }
 
 
+    //- Signed area enclosed by a loop of arcs (Green's theorem,
+    //  A = 1/2 closed integral of x dy - y dx; per arc of centre c, radius
+    //  r from angle s to e = s + sweep:
+    //  r cx (sin e - sin s) - r cy (cos e - cos s) + r^2 sweep) [m^2]
+    scalar loopArea(const arcLoop& loop)
+    {
+        scalar twiceA = 0;
+        for (const arc& a : loop)
+        {
+            const scalar s = a.start;
+            const scalar e = a.start + a.sweep;
+            twiceA +=
+                a.radius*a.centre.x()*(std::sin(e) - std::sin(s))
+              - a.radius*a.centre.y()*(std::cos(e) - std::cos(s))
+              + sqr(a.radius)*a.sweep;
+        }
+        return 0.5*twiceA;
+    }
+
+
+    //- Signed (shoelace) area of the polygon loop of pts [m^2]
+    scalar polygonArea(const List<vector2D>& pts, const labelList& loop)
+    {
+        scalar twiceA = 0;
+        forAll(loop, i)
+        {
+            const vector2D& a = pts[loop[i]];
+            const vector2D& b = pts[loop[(i + 1) % loop.size()]];
+            twiceA += a.x()*b.y() - a.y()*b.x();
+        }
+        return 0.5*twiceA;
+    }
+
+
+    //- The boundary points moved so that every loop's polygon encloses
+    //  the area of its curve: the points of each loop move along their
+    //  arc's radius, r -> r + delta, one delta per loop (delta > 0 for an
+    //  inscribed polygon: the outer surface moves out of the solid, a
+    //  hole's wall into the hole); the corners where two arcs of a loop
+    //  meet (a lobed pellet's valleys) stay where they are. The polygon
+    //  area is quadratic in delta: Newton's method from delta = 0, with
+    //  dA/ddelta = 1/2 sum over moved points of u_i x (p_i+1 - p_i-1)
+    //  (u_i the unit radius), converges in 3 or 4 steps to round-off.
+    //  For a full circle cut into n segments this is the closed form
+    //  r' = r sqrt(2 pi/(n sin(2 pi/n))).
+    List<vector2D> areaTruePoints
+    (
+        const region& reg,
+        const List<vector2D>& pts,
+        const labelListList& loops,
+        const scalar h,
+        scalarList& offsets
+    )
+    {
+        List<vector2D> moved(pts);
+        offsets.setSize(loops.size());
+        forAll(loops, loopi)
+        {
+            const labelList& loop = loops[loopi];
+            const arcLoop& arcs = reg.loops[loopi];
+
+            // Unit radius of every point of the loop (zero at corners), in
+            // the order sampleBoundary put them
+            List<vector2D> u(loop.size(), vector2D::zero);
+            label k = 0;
+            for (const arc& a : arcs)
+            {
+                const label n = max
+                (
+                    a.minSegments,
+                    label(std::round(mag(a.sweep)*a.radius/h))
+                );
+                for (label i = 0; i < n; ++i, ++k)
+                {
+                    if (i == 0 && arcs.size() > 1)
+                    {
+                        continue;
+                    }
+                    const scalar phi = a.start + a.sweep*i/n;
+                    u[k] = vector2D(std::cos(phi), std::sin(phi));
+                }
+            }
+
+            const scalar target = loopArea(arcs);
+            scalar delta = 0;
+            for (label iter = 0; iter < 20; ++iter)
+            {
+                forAll(loop, i)
+                {
+                    moved[loop[i]] = pts[loop[i]] + delta*u[i];
+                }
+                const scalar miss = polygonArea(moved, loop) - target;
+                if (mag(miss) <= 1e-15*mag(target))
+                {
+                    break;
+                }
+                scalar slope = 0;
+                forAll(loop, i)
+                {
+                    const vector2D d =
+                        moved[loop[(i + 1) % loop.size()]]
+                      - moved[loop[(i + loop.size() - 1) % loop.size()]];
+                    slope += 0.5*(u[i].x()*d.y() - u[i].y()*d.x());
+                }
+                delta -= miss/slope;
+            }
+            offsets[loopi] = delta;
+        }
+        return moved;
+    }
+
+
     //- Even-odd rule: is c inside the polygons?
     bool inside
     (
@@ -203,12 +315,16 @@ namespace
 
 
     //- The prism of the region from z = -height/2 to height/2, with the
-    //  edge length chosen to give about targetFaces triangles
+    //  edge length chosen to give about targetFaces triangles; volumeTrue:
+    //  the boundary points moved to area-true loops (areaTruePoints), the
+    //  same triangles, the flat caps' interior points and the heights as
+    //  they are
     rbd::triMesh prism
     (
         const region& reg,
         const scalar height,
-        const label targetFaces
+        const label targetFaces,
+        const rbd::pelletMeshes::facets placement
     )
     {
         // Count ~ a/h^2 + b/h: side walls 2 P H/h^2, caps
@@ -259,6 +375,15 @@ namespace
         SubList<vector2D>(capPts, ni, nb) = ipts;
         const List<triFace> cap =
             rbd::cgalMeshTools::triangulateRegion(capPts, loops);
+
+        // The triangles stay those of the inscribed boundary: the points
+        // move by about (h/r)^2 r/12, far less than the h/2 that keeps the
+        // lattice points off the boundary
+        if (placement == rbd::pelletMeshes::facets::volumeTrue)
+        {
+            scalarList offsets;
+            bpts = areaTruePoints(reg, bpts, loops, h, offsets);
+        }
 
         // Points: side wall layers k = 0..nz (k = 0 bottom), then the
         // lattice points of the bottom and of the top cap
@@ -609,7 +734,8 @@ Foam::string Foam::rbd::pelletMeshes::cylinderWithHolesError
 Foam::rbd::triMesh Foam::rbd::pelletMeshes::sphere
 (
     const scalar diameter,
-    const label faces
+    const label faces,
+    const facets placement
 )
 {
     check(sphereError(diameter, faces), "sphere");
@@ -675,6 +801,13 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::sphere
         }
         m = triMesh(std::move(p), m.faces());
     }
+
+    // Volume-true: the polyhedron scaled about the centre to the sphere's
+    // volume pi d^3/6 (a sphere has no flat face to keep)
+    if (placement == facets::volumeTrue)
+    {
+        m.scale(std::cbrt(pi*pow3(diameter)/6/m.volume()));
+    }
     return m;
 }
 
@@ -683,11 +816,15 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::cylinder
 (
     const scalar diameter,
     const scalar height,
-    const label faces
+    const label faces,
+    const facets placement
 )
 {
     check(cylinderError(diameter, height, faces), "cylinder");
-    return prism(holedDisk(0.5*diameter, List<vector2D>(), 0), height, faces);
+    return prism
+    (
+        holedDisk(0.5*diameter, List<vector2D>(), 0), height, faces, placement
+    );
 }
 
 
@@ -696,7 +833,8 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::ring
     const scalar outerDiameter,
     const scalar innerDiameter,
     const scalar height,
-    const label faces
+    const label faces,
+    const facets placement
 )
 {
     check
@@ -713,7 +851,8 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::ring
             0.5*innerDiameter
         ),
         height,
-        faces
+        faces,
+        placement
     );
 }
 
@@ -724,7 +863,8 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::lobes
     const scalar lobeDiameter,
     const scalar height,
     const label faces,
-    const scalar lobeCentreRadius
+    const scalar lobeCentreRadius,
+    const facets placement
 )
 {
     check
@@ -766,7 +906,7 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::lobes
     reg.area = n*(rc*r*std::sin(beta) + sqr(r)*beta);
     reg.perimeter = n*2*beta*r;
 
-    return prism(reg, height, faces);
+    return prism(reg, height, faces, placement);
 }
 
 
@@ -777,7 +917,8 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::cylinderWithHoles
     const label nHoles,
     const scalar holeDiameter,
     const label faces,
-    const scalar holeCircleRadius
+    const scalar holeCircleRadius,
+    const facets placement
 )
 {
     check
@@ -803,7 +944,8 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::cylinderWithHoles
     (
         holedDisk(0.5*diameter, centres, 0.5*holeDiameter),
         height,
-        faces
+        faces,
+        placement
     );
 }
 

@@ -163,3 +163,53 @@ TEST(planeSection, twoCellsAndAPlaneThroughTheirFace)
         )
     );
 }
+
+
+TEST(planeSection, volumeBelowAPlane)
+{
+    // One cell, every face on the boundary: the unit cube and the sheared
+    // cube (volume 1 too) hold z of their volume below the plane z
+    const faceList f(cellFaces(0));
+    for (const scalar z : {-0.5, 0.0, 0.01, 0.5, 0.99, 1.0, 1.5})
+    {
+        const scalar expected = min(max(z, scalar(0)), scalar(1));
+        EXPECT_NEAR
+        (
+            rbd::planeSection::volumeBelow(corners(1), f, 0, z),
+            expected, 1e-14
+        ) << "z = " << z;
+        EXPECT_NEAR
+        (
+            rbd::planeSection::volumeBelow(corners(1, 0.3, -0.2), f, 0, z),
+            expected, 1e-14
+        ) << "z = " << z;
+    }
+
+    // Two cells on each other: the shared face is internal (face 0, the
+    // first nInternalFaces faces) and does not count; the outer faces
+    // give the stack's volume below z
+    faceList two(11);
+    two[0] = cellFaces(0)[1];                 // z = 1, owner 0
+    label n = 1;
+    for (label k = 0; k < 2; ++k)
+    {
+        const faceList c(cellFaces(k));
+        for (label i = 0; i < 6; ++i)
+        {
+            if ((k == 0 && i == 1) || (k == 1 && i == 0))
+            {
+                continue;
+            }
+            two[n++] = c[i];
+        }
+    }
+    ASSERT_EQ(n, 11);
+    for (const scalar z : {0.25, 1.0, 1.75, 3.0})
+    {
+        EXPECT_NEAR
+        (
+            rbd::planeSection::volumeBelow(corners(2, 0.1, 0.2), two, 1, z),
+            min(z, scalar(2)), 1e-14
+        ) << "z = " << z;
+    }
+}

@@ -266,3 +266,62 @@ TEST(pressureDropSectionsDeath, packedSectionWithoutAPressureDrop)
         "pressure drop over the packed section(.|\n)*not a positive number"
     );
 }
+
+
+TEST(pressureDropSections, fluidMeshPorosityBesideTheSummarys)
+{
+    const caseWritingTest::tempDir tmp;
+    writeCase(tmp.path(), sphereSummary + " stlPorosity 0.4102;");
+    rbd::pressureDropComparison c(tmp.path());
+    EXPECT_DOUBLE_EQ(c.stlPorosity(), 0.4102);
+    EXPECT_FALSE(c.meshPorosityMeasured());
+
+    // Fluid volumes of 0.4 and 0.44 of the tube over the whole bed (0.05 m)
+    // and the packed section (0.04 m)
+    const scalar A = 0.25*constant::mathematical::pi*D*D;
+    c.setFluidVolumes(0.44*A*0.05, 0.4*A*0.04);
+    c.setPackedTopPressure(0.05);
+    ASSERT_TRUE(c.meshPorosityMeasured());
+    EXPECT_NEAR(c.meshPorosity(), 0.44, 1e-12);
+    EXPECT_NEAR(c.packedMeshPorosity(), 0.4, 1e-12);
+
+    OStringStream os;
+    c.report(os);
+    const std::string text(os.str());
+    EXPECT_NE
+    (
+        text.find
+        (
+            "Porosity of the packed section: bulkPorosity 0.41 (exact"
+            " pellets), stlPorosity 0.4102 (pellets.stl), fluid mesh 0.4"
+        ),
+        std::string::npos
+    ) << text;
+    EXPECT_NE
+    (
+        text.find("Porosity of the whole bed: bedPorosity 0.45, fluid mesh"),
+        std::string::npos
+    ) << text;
+    // The correlations stay at the summary's porosities
+    EXPECT_NEAR
+    (
+        c.packedErgun(),
+        rbd::correlations::ergun(nu, 1, c.superficialVelocity(), 0.41, dp),
+        1e-12
+    );
+
+    const dictionary d(rbd::readFoamFile(c.writeFile()));
+    EXPECT_NEAR(d.get<scalar>("meshPorosity"), 0.44, 1e-12);
+    EXPECT_NEAR
+    (
+        d.subDict("packedSection").get<scalar>("meshPorosity"), 0.4, 1e-12
+    );
+    EXPECT_NEAR
+    (
+        d.subDict("packedSection").get<scalar>("stlPorosity"), 0.4102, 1e-12
+    );
+
+    // A summary without stlPorosity (an older bed): -1, not printed
+    writeCase(tmp.path(), sphereSummary);
+    EXPECT_EQ(rbd::pressureDropComparison(tmp.path()).stlPorosity(), -1);
+}

@@ -94,8 +94,9 @@ TEST(bedOutputHeaders, cylindersNamesNAndNvAndCoversTheBed)
     EXPECT_NEAR(z.front()[0], 0.5*dz, 1e-9);
     EXPECT_NEAR(z.back()[0], top - 0.5*dz, 1e-9);
     EXPECT_GT(z.back()[0], H);
-    // The slabs' mean is the porosity of the whole bed (mesh volumes)
-    const scalar Vm = shape->mesh().volume();
+    // The slabs' mean is the porosity of the whole bed (the exact
+    // cylinders: the mesh's volumes scaled to the exact volume)
+    const scalar Vm = shape->exactVolume();
     scalar mean = 0;
     for (const auto& row : z)
     {
@@ -202,7 +203,8 @@ TEST(bedOutputHeaders, summaryUnitsAsComments)
             "pellets", "requestedPellets", "status", "shape",
             "tubeDiameter", "pelletDiameter", "volumeEquivalentDiameter",
             "diameterRatio", "volumeEquivalentDiameterRatio",
-            "bulkPorosity", "porosityHeight", "bulkPorosityCorrelations",
+            "bulkPorosity", "stlPorosity", "porosityHeight",
+            "bulkPorosityCorrelations",
             "radialCorrelations", "bedHeight", "bedPorosity", "maxOverlap",
             "finalMaxOverlap", "simulatedTime", "wallTime", "cpuTime",
             "steps", "collisions", "lcpFailures", "kineticEnergy",
