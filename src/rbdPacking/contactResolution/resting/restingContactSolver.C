@@ -100,13 +100,6 @@ namespace
             (std::uint64_t(std::uint32_t(a)) << 32)
           | std::uint32_t(b - label(tubeBottom));
     }
-
-    //- One island's Jacobian rows: per contact and side, J = [lin, ang]
-    //  and W = M^-1 J^T
-    struct row
-    {
-        vector lin, ang, wLin, wAng;
-    };
 }
 
 
@@ -121,7 +114,7 @@ Foam::rbd::restingContactSolver::restingContactSolver
 :
     solver_(lcpSolver::New(dict)),
     boxed_(),
-    compliance_(compliance),
+    assembly_(compliance),
     coupled_(coupled),
     normalForces_(),
     active_()
@@ -140,8 +133,6 @@ void Foam::rbd::restingContactSolver::bodyBuffers::resize(const label n)
     parent.resize(n);
     std::iota(parent.begin() + n0, parent.end(), n0);
     islandOf.resize(n);
-    bodyRows.resize(n);
-    bodyColumn.resize(n, -1);
     listed.resize(n, false);
     for (List<vector>* f : {&Ffric, &tauFric, &Ftot, &tauTot})
     {
@@ -229,169 +220,19 @@ Foam::rbd::restingContactSolver::solve
     // Friction of each contact [N]
     List<vector> friction(contacts.size(), Zero);
 
-    std::vector<row> rowsI, rowsK;
-    std::vector<std::vector<std::pair<label, bool>>>& bodyRows = buf_.bodyRows;
-    std::vector<label>& bodyColumn = buf_.bodyColumn;
-    std::vector<Eigen::Triplet<double>> gTriplets;
     lcpFactors factors;
-    std::vector<Eigen::Triplet<double>> triplets;
     std::vector<bool> guess;
 
     // Warm start: pairs active in the previous step (then in pass 1)
     std::unordered_map<std::uint64_t, bool>& active = active_;
 
-    // A = J M^-1 J^T (+ the compliance) of constraint rows (contact, unit
-    // direction u): J = [u^T, (r_i x u)^T | -u^T, -(r_k x u)^T]
+    // A of constraint rows (contact, unit direction) and its factors
+    // (lcpAssembly)
     auto assemble =
-    [&](const std::vector<std::pair<label, vector>>& dirs,
+    [&](const std::vector<lcpAssembly::constraint>& dirs,
         Eigen::SparseMatrix<double>& A, Eigen::VectorXd& shift)
     {
-        const label n = dirs.size();
-        const row zero{Zero, Zero, Zero, Zero};
-        rowsI.assign(n, zero);
-        rowsK.assign(n, zero);
-
-        // Jacobian rows and the bodies' contact lists
-        for (label a = 0; a < n; ++a)
-        {
-            const contact& c = contacts[dirs[a].first];
-            const vector& u = dirs[a].second;
-            const rigidBody& bi = bodies[c.i];
-            const vector ri(c.p - bi.x());
-            row& Ri = rowsI[a];
-            Ri.lin = u;
-            Ri.ang = (ri ^ u);
-            Ri.wLin = bi.invMass()*Ri.lin;
-            Ri.wAng = bi.applyInvInertia(Ri.ang);
-
-            if (c.k >= 0 && !fixed[c.k])
-            {
-                const rigidBody& bk = bodies[c.k];
-                const vector rk(c.p - bk.x());
-                row& Rk = rowsK[a];
-                Rk.lin = -u;
-                Rk.ang = -(rk ^ u);
-                Rk.wLin = bk.invMass()*Rk.lin;
-                Rk.wAng = bk.applyInvInertia(Rk.ang);
-            }
-        }
-
-        // Summed over the bodies two rows share: sparse, from each moving
-        // body's list of the island's rows on it
-        std::vector<label> touched;
-        auto addRow = [&](const label body, const label a, const bool kSide)
-        {
-            if (body >= 0 && !fixed[body])
-            {
-                if (bodyRows[body].empty())
-                {
-                    touched.push_back(body);
-                }
-                bodyRows[body].emplace_back(a, kSide);
-            }
-        };
-        for (label a = 0; a < n; ++a)
-        {
-            const contact& c = contacts[dirs[a].first];
-            addRow(c.i, a, false);
-            addRow(c.k, a, true);
-        }
-        triplets.clear();
-        for (const label body : touched)
-        {
-            const auto& list = bodyRows[body];
-            for (const auto& ra : list)
-            {
-                const row& Ra = ra.second ? rowsK[ra.first] : rowsI[ra.first];
-                for (const auto& rb : list)
-                {
-                    const row& Rb =
-                        rb.second ? rowsK[rb.first] : rowsI[rb.first];
-                    triplets.emplace_back
-                    (
-                        ra.first, rb.first,
-                        (Ra.lin & Rb.wLin) + (Ra.ang & Rb.wAng)
-                    );
-                }
-            }
-            bodyRows[body].clear();
-        }
-        A.resize(n, n);
-        A.setFromTriplets(triplets.begin(), triplets.end());
-
-        // The compliance of the mesh contacts (see the header): one
-        // solution where redundant contact points make A singular
-        shift.resize(n);
-        for (label a = 0; a < n; ++a)
-        {
-            shift(a) =
-                contacts[dirs[a].first].centreBased
-              ? 0
-              : compliance_*A.coeff(a, a);
-            A.coeffRef(a, a) += shift(a);
-        }
-
-        // A = G G^T + diag(shift), G = J W^1/2 (lcpFactors), where it has
-        // fewer columns (6 per moving body) than rows: a heap of mesh
-        // pellets, whose LCP the solver can then work on in body space
-        const label d = 6*label(touched.size());
-        factors.G.resize(0, 0);
-        if (d < n)
-        {
-            // Per body: its first column, and L with L L^T = I^-1 (world
-            // frame; zero for a body that does not rotate)
-            std::vector<Eigen::Matrix3d> sqrtInvInertia(touched.size());
-            for (size_t t = 0; t < touched.size(); ++t)
-            {
-                const rigidBody& bd = bodies[touched[t]];
-                bodyColumn[touched[t]] = 6*label(t);
-                Eigen::Matrix3d W(Eigen::Matrix3d::Zero());
-                if (bd.rotates())
-                {
-                    for (direction r = 0; r < 3; ++r)
-                    {
-                        for (direction c = 0; c < 3; ++c)
-                        {
-                            W(r, c) = bd.invInertia()(r, c);
-                        }
-                    }
-                    W = W.llt().matrixL();
-                }
-                sqrtInvInertia[t] = W;
-            }
-            gTriplets.clear();
-            auto addG = [&](const label a, const label body, const row& R)
-            {
-                const label col = bodyColumn[body];
-                const scalar sqrtInvMass = Foam::sqrt(bodies[body].invMass());
-                const Eigen::Vector3d g
-                (
-                    sqrtInvInertia[col/6].transpose()
-                   *Eigen::Vector3d(R.ang.x(), R.ang.y(), R.ang.z())
-                );
-                for (direction k = 0; k < 3; ++k)
-                {
-                    gTriplets.emplace_back(a, col + k, sqrtInvMass*R.lin[k]);
-                    gTriplets.emplace_back(a, col + 3 + k, g(k));
-                }
-            };
-            for (label a = 0; a < n; ++a)
-            {
-                const contact& c = contacts[dirs[a].first];
-                addG(a, c.i, rowsI[a]);
-                if (c.k >= 0 && !fixed[c.k])
-                {
-                    addG(a, c.k, rowsK[a]);
-                }
-            }
-            factors.G.resize(n, d);
-            factors.G.setFromTriplets(gTriplets.begin(), gTriplets.end());
-            factors.s = shift;
-            for (const label body : touched)
-            {
-                bodyColumn[body] = -1;
-            }
-        }
+        assembly_.assemble(bodies, contacts, fixed, dirs, A, shift, factors);
     };
 
     // B of a normal row: d'' without contact forces (eq 28), plus the

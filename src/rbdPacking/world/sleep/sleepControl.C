@@ -126,7 +126,7 @@ bool Foam::rbd::sleepControl::fallAsleep
     // sleep: one still in the air (a slow fall at a small gravity, a large
     // sleepVelocity) stays awake
     {
-        boolList supported(bodies.size(), false);
+        std::vector<bool> supported(bodies.size(), false);
         for (const contact& c : contacts)
         {
             if (c.k < 0 || c.n.z() > 0)

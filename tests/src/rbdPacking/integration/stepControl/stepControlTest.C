@@ -61,7 +61,7 @@ TEST(stepControl, timeToLeaveCircleHitsTheCircle)
 {
     const scalar rho = 0.02;
     const point p(0.005, -0.003, 0);
-    for (const vector v : {vector(1, 0, 0), vector(-0.2, 0.7, 0),
+    for (const vector& v : {vector(1, 0, 0), vector(-0.2, 0.7, 0),
                            vector(1e-6, 0, 0), vector(0, -3, 0)})
     {
         const scalar t = stepControl::timeToLeaveCircle(p, v, rho);

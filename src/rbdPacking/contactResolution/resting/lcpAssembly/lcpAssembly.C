@@ -1,0 +1,190 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "lcpAssembly.H"
+#include <Eigen/Dense>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::lcpAssembly::lcpAssembly(const scalar compliance)
+:
+    compliance_(compliance),
+    rowsI_(),
+    rowsK_(),
+    bodyRows_(),
+    bodyColumn_(),
+    triplets_(),
+    gTriplets_()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::rbd::lcpAssembly::assemble
+(
+    const UList<rigidBody>& bodies,
+    const UList<contact>& contacts,
+    const boolList& fixed,
+    const std::vector<constraint>& dirs,
+    Eigen::SparseMatrix<double>& A,
+    Eigen::VectorXd& shift,
+    lcpFactors& factors
+)
+{
+    if (label(bodyRows_.size()) < bodies.size())
+    {
+        bodyRows_.resize(bodies.size());
+        bodyColumn_.resize(bodies.size(), -1);
+    }
+
+    const label n = dirs.size();
+    const row zero{Zero, Zero, Zero, Zero};
+    rowsI_.assign(n, zero);
+    rowsK_.assign(n, zero);
+
+    // Jacobian rows and the bodies' contact lists
+    for (label a = 0; a < n; ++a)
+    {
+        const contact& c = contacts[dirs[a].first];
+        const vector& u = dirs[a].second;
+        const rigidBody& bi = bodies[c.i];
+        const vector ri(c.p - bi.x());
+        row& Ri = rowsI_[a];
+        Ri.lin = u;
+        Ri.ang = (ri ^ u);
+        Ri.wLin = bi.invMass()*Ri.lin;
+        Ri.wAng = bi.applyInvInertia(Ri.ang);
+
+        if (c.k >= 0 && !fixed[c.k])
+        {
+            const rigidBody& bk = bodies[c.k];
+            const vector rk(c.p - bk.x());
+            row& Rk = rowsK_[a];
+            Rk.lin = -u;
+            Rk.ang = -(rk ^ u);
+            Rk.wLin = bk.invMass()*Rk.lin;
+            Rk.wAng = bk.applyInvInertia(Rk.ang);
+        }
+    }
+
+    // Summed over the bodies two rows share: sparse, from each moving
+    // body's list of the island's rows on it
+    std::vector<label> touched;
+    auto addRow = [&](const label body, const label a, const bool kSide)
+    {
+        if (body >= 0 && !fixed[body])
+        {
+            if (bodyRows_[body].empty())
+            {
+                touched.push_back(body);
+            }
+            bodyRows_[body].emplace_back(a, kSide);
+        }
+    };
+    for (label a = 0; a < n; ++a)
+    {
+        const contact& c = contacts[dirs[a].first];
+        addRow(c.i, a, false);
+        addRow(c.k, a, true);
+    }
+    triplets_.clear();
+    for (const label body : touched)
+    {
+        const auto& list = bodyRows_[body];
+        for (const auto& ra : list)
+        {
+            const row& Ra = ra.second ? rowsK_[ra.first] : rowsI_[ra.first];
+            for (const auto& rb : list)
+            {
+                const row& Rb =
+                    rb.second ? rowsK_[rb.first] : rowsI_[rb.first];
+                triplets_.emplace_back
+                (
+                    ra.first, rb.first,
+                    (Ra.lin & Rb.wLin) + (Ra.ang & Rb.wAng)
+                );
+            }
+        }
+        bodyRows_[body].clear();
+    }
+    A.resize(n, n);
+    A.setFromTriplets(triplets_.begin(), triplets_.end());
+
+    // The compliance of the mesh contacts (see the header): one
+    // solution where redundant contact points make A singular
+    shift.resize(n);
+    for (label a = 0; a < n; ++a)
+    {
+        shift(a) =
+            contacts[dirs[a].first].centreBased
+          ? 0
+          : compliance_*A.coeff(a, a);
+        A.coeffRef(a, a) += shift(a);
+    }
+
+    // A = G G^T + diag(shift), G = J W^1/2 (lcpFactors), where it has
+    // fewer columns (6 per moving body) than rows: a heap of mesh
+    // pellets, whose LCP the solver can then work on in body space
+    const label d = 6*label(touched.size());
+    factors.G.resize(0, 0);
+    if (d < n)
+    {
+        // Per body: its first column, and L with L L^T = I^-1 (world
+        // frame; zero for a body that does not rotate)
+        std::vector<Eigen::Matrix3d> sqrtInvInertia(touched.size());
+        for (size_t t = 0; t < touched.size(); ++t)
+        {
+            const rigidBody& bd = bodies[touched[t]];
+            bodyColumn_[touched[t]] = 6*label(t);
+            Eigen::Matrix3d W(Eigen::Matrix3d::Zero());
+            if (bd.rotates())
+            {
+                for (direction r = 0; r < 3; ++r)
+                {
+                    for (direction c = 0; c < 3; ++c)
+                    {
+                        W(r, c) = bd.invInertia()(r, c);
+                    }
+                }
+                W = W.llt().matrixL();
+            }
+            sqrtInvInertia[t] = W;
+        }
+        gTriplets_.clear();
+        auto addG = [&](const label a, const label body, const row& R)
+        {
+            const label col = bodyColumn_[body];
+            const scalar sqrtInvMass = Foam::sqrt(bodies[body].invMass());
+            const Eigen::Vector3d g
+            (
+                sqrtInvInertia[col/6].transpose()
+               *Eigen::Vector3d(R.ang.x(), R.ang.y(), R.ang.z())
+            );
+            for (direction k = 0; k < 3; ++k)
+            {
+                gTriplets_.emplace_back(a, col + k, sqrtInvMass*R.lin[k]);
+                gTriplets_.emplace_back(a, col + 3 + k, g(k));
+            }
+        };
+        for (label a = 0; a < n; ++a)
+        {
+            const contact& c = contacts[dirs[a].first];
+            addG(a, c.i, rowsI_[a]);
+            if (c.k >= 0 && !fixed[c.k])
+            {
+                addG(a, c.k, rowsK_[a]);
+            }
+        }
+        factors.G.resize(n, d);
+        factors.G.setFromTriplets(gTriplets_.begin(), gTriplets_.end());
+        factors.s = shift;
+        for (const label body : touched)
+        {
+            bodyColumn_[body] = -1;
+        }
+    }
+}
+
+
+// ************************************************************************* //
