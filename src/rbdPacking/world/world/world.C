@@ -5,22 +5,7 @@
 #include "world.H"
 #include "stateIO.H"
 #include "sphereContacts.H"
-#include "cylinderContacts.H"
-#include "cylinder.H"
-#include "ring.H"
 #include "midpointIntegrator.H"
-
-// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
-
-bool Foam::rbd::world::usesMeshes
-(
-    const pelletShape& shape,
-    const simulationControls& controls
-)
-{
-    return !shape.isSphere() || controls.contactModel == "mesh";
-}
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -42,15 +27,17 @@ Foam::rbd::world::world
     band_(controls.proximity*shape.boundingRadius()),
     touch_(controls.contactTolerance*shape.diameter()),
     slop_(controls.contactTolerance*shape.diameter()),
-    meshes_(),
+    dispatch_
+    (
+        shape, container, material.restitution, material.friction, band_,
+        controls.contactModel
+    ),
     stepControl_
     (
         controls.gravity, controls.restingVelocity, band_, touch_, rb_,
-        !usesMeshes(shape, controls), container.radius()
+        !contactDispatch::usesMeshes(shape, controls.contactModel),
+        container.radius()
     ),
-    hullRadius_(0),
-    hullHalfHeight_(0),
-    hullRimAngles_(),
     bodies_(),
     fixed_(),
     sleep_
@@ -84,57 +71,9 @@ Foam::rbd::world::world
     stats_(),
     tinySteps_(0)
 {
-    // Narrow phase by shape pair; contactModel mesh forces the meshes
-    const bool meshOnly = controls.contactModel == "mesh";
-    if (usesMeshes(shape_, controls))
-    {
-        meshes_.reset(new meshContacts(shape_.mesh(), band_));
-    }
-    if (!meshOnly)
-    {
-        if (isA<cylinder>(shape_))
-        {
-            const cylinder& s = refCast<const cylinder>(shape_);
-            hullRadius_ = 0.5*s.diameter();
-            hullHalfHeight_ = 0.5*s.height();
-        }
-        else if (isA<ring>(shape_))
-        {
-            const ring& s = refCast<const ring>(shape_);
-            hullRadius_ = 0.5*s.diameter();
-            hullHalfHeight_ = 0.5*s.height();
-        }
-        if (hullRadius_ > 0)
-        {
-            hullRimAngles_ = cylinderContacts::rimAngles
-            (
-                shape_.mesh().points(), hullRadius_
-            );
-        }
-    }
-
     Info<< "Narrow phase (contactModel " << controls.contactModel << "): ";
-    if (meshes_.valid())
-    {
-        Info<< "triangle meshes (" << shape_.mesh().nFaces()
-            << " faces, " << meshes_->bvh().nodes().size()
-            << " tree nodes) between pellets, ";
-        if (hullRadius_ > 0)
-        {
-            Info<< "exact " << shape_.type() << " contacts (rims: polygons"
-                << " of " << hullRimAngles_.size() << " vertices, as the"
-                << " mesh)";
-        }
-        else
-        {
-            Info<< "mesh contacts";
-        }
-        Info<< " with the container" << endl;
-    }
-    else
-    {
-        Info<< "exact sphere contacts" << endl;
-    }
+    dispatch_.describe(Info);
+    Info<< endl;
 }
 
 
@@ -208,54 +147,13 @@ void Foam::rbd::world::setVelocity
 
 void Foam::rbd::world::pelletPair(const label i, const label k)
 {
-    const label start = contacts_.size();
-    if (meshes_.valid())
-    {
-        meshes_->meshMesh(i, bodies_[i], k, bodies_[k], contacts_);
-    }
-    else
-    {
-        contact c;
-        if
-        (
-            sphereContacts::sphereSphere
-            (
-                i, bodies_[i], rb_, k, bodies_[k], rb_, band_, c
-            )
-        )
-        {
-            contacts_.append(c);
-        }
-    }
-    for (label ci = start; ci < contacts_.size(); ++ci)
-    {
-        contacts_[ci].e = material_.restitution;
-        contacts_[ci].mu = material_.friction;
-    }
+    dispatch_.pelletPair(i, bodies_[i], k, bodies_[k], contacts_);
 }
 
 
 void Foam::rbd::world::pelletContainer(const label i)
 {
-    if (!meshes_.valid())
-    {
-        sphereContacts::sphereTube
-        (
-            i, bodies_[i], rb_, tube_, band_, contacts_
-        );
-    }
-    else if (hullRadius_ > 0)
-    {
-        cylinderContacts::cylinderTube
-        (
-            i, bodies_[i], hullRadius_, hullHalfHeight_, tube_, band_,
-            contacts_, hullRimAngles_
-        );
-    }
-    else
-    {
-        meshes_->meshTube(i, bodies_[i], tube_, contacts_);
-    }
+    dispatch_.pelletContainer(i, bodies_[i], contacts_);
 }
 
 

@@ -1,0 +1,162 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "contactDispatch.H"
+#include "sphereContacts.H"
+#include "cylinderContacts.H"
+#include "cylinder.H"
+#include "ring.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::contactDispatch::contactDispatch
+(
+    const pelletShape& shape,
+    const tube& container,
+    const scalar restitution,
+    const scalar friction,
+    const scalar band,
+    const word& contactModel
+)
+:
+    shape_(shape),
+    tube_(container),
+    restitution_(restitution),
+    friction_(friction),
+    rb_(shape.boundingRadius()),
+    band_(band),
+    meshes_(),
+    hullRadius_(0),
+    hullHalfHeight_(0),
+    hullRimAngles_()
+{
+    if (usesMeshes(shape_, contactModel))
+    {
+        meshes_.reset(new meshContacts(shape_.mesh(), band_));
+    }
+
+    // The container by the hull where the shape has one (contactModel
+    // mesh: by the mesh)
+    if (contactModel != "mesh")
+    {
+        if (isA<cylinder>(shape_))
+        {
+            const cylinder& s = refCast<const cylinder>(shape_);
+            hullRadius_ = 0.5*s.diameter();
+            hullHalfHeight_ = 0.5*s.height();
+        }
+        else if (isA<ring>(shape_))
+        {
+            const ring& s = refCast<const ring>(shape_);
+            hullRadius_ = 0.5*s.diameter();
+            hullHalfHeight_ = 0.5*s.height();
+        }
+        if (hullRadius_ > 0)
+        {
+            hullRimAngles_ = cylinderContacts::rimAngles
+            (
+                shape_.mesh().points(), hullRadius_
+            );
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::rbd::contactDispatch::usesMeshes
+(
+    const pelletShape& shape,
+    const word& contactModel
+)
+{
+    return !shape.isSphere() || contactModel == "mesh";
+}
+
+
+void Foam::rbd::contactDispatch::pelletPair
+(
+    const label i,
+    const rigidBody& bi,
+    const label k,
+    const rigidBody& bk,
+    DynamicList<contact>& contacts
+) const
+{
+    const label start = contacts.size();
+    if (meshes_.valid())
+    {
+        meshes_->meshMesh(i, bi, k, bk, contacts);
+    }
+    else
+    {
+        contact c;
+        if (sphereContacts::sphereSphere(i, bi, rb_, k, bk, rb_, band_, c))
+        {
+            contacts.append(c);
+        }
+    }
+
+    // The pair's material (the container's is set by the generators)
+    for (label ci = start; ci < contacts.size(); ++ci)
+    {
+        contacts[ci].e = restitution_;
+        contacts[ci].mu = friction_;
+    }
+}
+
+
+void Foam::rbd::contactDispatch::pelletContainer
+(
+    const label i,
+    const rigidBody& bi,
+    DynamicList<contact>& contacts
+) const
+{
+    if (!meshes_.valid())
+    {
+        sphereContacts::sphereTube(i, bi, rb_, tube_, band_, contacts);
+    }
+    else if (hullRadius_ > 0)
+    {
+        cylinderContacts::cylinderTube
+        (
+            i, bi, hullRadius_, hullHalfHeight_, tube_, band_, contacts,
+            hullRimAngles_
+        );
+    }
+    else
+    {
+        meshes_->meshTube(i, bi, tube_, contacts);
+    }
+}
+
+
+void Foam::rbd::contactDispatch::describe(Ostream& os) const
+{
+    if (meshes_.valid())
+    {
+        os  << "triangle meshes (" << shape_.mesh().nFaces()
+            << " faces, " << meshes_->bvh().nodes().size()
+            << " tree nodes) between pellets, ";
+        if (hullRadius_ > 0)
+        {
+            os  << "exact " << shape_.type() << " contacts (rims: polygons"
+                << " of " << hullRimAngles_.size() << " vertices, as the"
+                << " mesh)";
+        }
+        else
+        {
+            os  << "mesh contacts";
+        }
+        os  << " with the container";
+    }
+    else
+    {
+        os  << "exact sphere contacts";
+    }
+}
+
+
+// ************************************************************************* //
