@@ -17,7 +17,8 @@ Foam::rbd::contactDispatch::contactDispatch
     const scalar restitution,
     const scalar friction,
     const scalar band,
-    const word& contactModel
+    const word& contactModel,
+    const label threads
 )
 :
     shape_(shape),
@@ -33,7 +34,11 @@ Foam::rbd::contactDispatch::contactDispatch
 {
     if (usesMeshes(shape_, contactModel))
     {
-        meshes_.reset(new meshContacts(shape_.mesh(), band_));
+        meshes_.setSize(max(threads, label(1)));
+        forAll(meshes_, t)
+        {
+            meshes_.set(t, new meshContacts(shape_.mesh(), band_));
+        }
     }
 
     // The container by the hull where the shape has one (contactModel
@@ -81,13 +86,14 @@ void Foam::rbd::contactDispatch::pelletPair
     const rigidBody& bi,
     const label k,
     const rigidBody& bk,
-    DynamicList<contact>& contacts
+    DynamicList<contact>& contacts,
+    const label thread
 ) const
 {
     const label start = contacts.size();
-    if (meshes_.valid())
+    if (meshes())
     {
-        meshes_->meshMesh(i, bi, k, bk, contacts);
+        meshes_[thread].meshMesh(i, bi, k, bk, contacts);
     }
     else
     {
@@ -114,7 +120,7 @@ void Foam::rbd::contactDispatch::pelletContainer
     DynamicList<contact>& contacts
 ) const
 {
-    if (!meshes_.valid())
+    if (!meshes())
     {
         sphereContacts::sphereTube(i, bi, rb_, tube_, band_, contacts);
     }
@@ -128,17 +134,17 @@ void Foam::rbd::contactDispatch::pelletContainer
     }
     else
     {
-        meshes_->meshTube(i, bi, tube_, contacts);
+        meshes_[0].meshTube(i, bi, tube_, contacts);
     }
 }
 
 
 void Foam::rbd::contactDispatch::describe(Ostream& os) const
 {
-    if (meshes_.valid())
+    if (meshes())
     {
         os  << "triangle meshes (" << shape_.mesh().nFaces()
-            << " faces, " << meshes_->bvh().nodes().size()
+            << " faces, " << meshes_[0].bvh().nodes().size()
             << " tree nodes) between pellets, ";
         if (hullRadius_ > 0)
         {

@@ -27,7 +27,8 @@ namespace
 
 const Foam::wordList Foam::rbd::checkpoint::resumableEntries
 ({
-    "endTime", "checkpointInterval", "logInterval", "writeInterval"
+    "endTime", "checkpointInterval", "logInterval", "writeInterval",
+    "threads"
 });
 
 const Foam::wordList Foam::rbd::checkpoint::resumableBlocks
@@ -210,7 +211,8 @@ void Foam::rbd::checkpoint::read
             << " the dictionary the checkpoint " << file.c_str()
             << " was written with." << nl
             << "    A resumed run may change only simulation/"
-            << "{endTime, checkpointInterval, logInterval, writeInterval} "
+            << "{endTime, checkpointInterval, logInterval, writeInterval, "
+            << "threads} "
             << "and the cfdCase "
             << "block; run without -resume to pack anew."
             << exit(FatalIOError);

@@ -6,6 +6,9 @@
 #include "dictionaryChecks.H"
 #include "lcpSolver.H"
 #include "IStringStream.H"
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -28,7 +31,7 @@ const Foam::wordList Foam::rbd::simulationControls::knownEntries
     "restitutionSweeps", "maxSweeps", "collisionTolerance",
     "sleepVelocity", "sleepTime", "wakeVelocity",
     "settleTime", "settleEnergy", "logInterval", "checkpointInterval",
-    "writeInterval",
+    "writeInterval", "threads",
     "lcpSolver", "restingCompliance", "contactModel", "restingFriction",
     "preset"
 });
@@ -141,6 +144,7 @@ Foam::rbd::simulationControls::simulationControls
         1e-9, 0.01, "-")),
     restitutionSweeps(getLabelOrDefault(d, "restitutionSweeps", 10, 0)),
     maxSweeps(getLabelOrDefault(d, "maxSweeps", 200, 1)),
+    threads(getLabelOrDefault(d, "threads", 0, 0, 1024)),
     collisionTolerance(getInRangeOrDefault(d, "collisionTolerance", 1e-3,
         1e-9, 0.1, "-")),
     sleepVelocity(getNonNegativeOrDefault(d, "sleepVelocity", 0.001, "m/s",
@@ -175,6 +179,17 @@ Foam::rbd::simulationControls::simulationControls
     preset(d.getOrDefault<word>("preset", "default")),
     dict(d)
 {
+    // threads 0: all cores (OpenMP's count, which OMP_NUM_THREADS sets;
+    // without OpenMP one)
+    if (threads == 0)
+    {
+        #ifdef _OPENMP
+        threads = omp_get_max_threads();
+        #else
+        threads = 1;
+        #endif
+    }
+
     wordList known(knownEntries);
     // <name>Coeffs of every LCP solver there is
     known.append(lcpSolver::coeffsNames());
@@ -239,6 +254,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("contactTolerance", contactTolerance);
     os.writeEntry("restitutionSweeps", restitutionSweeps);
     os.writeEntry("maxSweeps", maxSweeps);
+    os.writeEntry("threads", threads);
     os.writeEntry("collisionTolerance", collisionTolerance);
     os.writeEntry("sleepVelocity", sleepVelocity);
     os.writeEntry("sleepTime", sleepTime);

@@ -30,7 +30,7 @@ Foam::rbd::world::world
     dispatch_
     (
         shape, container, material.restitution, material.friction, band_,
-        controls.contactModel
+        controls.contactModel, controls.threads
     ),
     stepControl_
     (
@@ -73,6 +73,11 @@ Foam::rbd::world::world
 {
     Info<< "Narrow phase (contactModel " << controls.contactModel << "): ";
     dispatch_.describe(Info);
+    if (dispatch_.meshes())
+    {
+        Info<< "; pellet pairs on " << controls.threads << " thread"
+            << (controls.threads > 1 ? "s" : "");
+    }
     Info<< endl;
 }
 
@@ -168,6 +173,8 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
     }
     neighbours_.update(x, 2*rb_ + band_);
 
+    // The pairs, the awake body first where one sleeps
+    pairScratch_.clear();
     for
     (
         const labelPair& pr
@@ -180,7 +187,44 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
         {
             std::swap(i, k);
         }
-        pelletPair(i, k);
+        pairScratch_.append(labelPair(i, k));
+    }
+
+    // Their narrow phase: mesh pairs on the threads, each a contiguous
+    // run of the pairs into its own list, joined in the runs' order, so
+    // that the contact list (and the packing) is the same for any number
+    // of threads. Sphere pairs cost less than a thread's start.
+    const label nPairs = pairScratch_.size();
+    const label nThreads =
+        dispatch_.meshes() ? min(controls_.threads, nPairs/2) : 1;
+    if (nThreads > 1)
+    {
+        threadContacts_.setSize(nThreads);
+        #pragma omp parallel for num_threads(nThreads) schedule(static, 1)
+        for (label t = 0; t < nThreads; ++t)
+        {
+            DynamicList<contact>& found = threadContacts_[t];
+            found.clear();
+            const label begin = (nPairs*t)/nThreads;
+            const label end = (nPairs*(t + 1))/nThreads;
+            for (label p = begin; p < end; ++p)
+            {
+                const label i = pairScratch_[p].first();
+                const label k = pairScratch_[p].second();
+                dispatch_.pelletPair(i, bodies_[i], k, bodies_[k], found, t);
+            }
+        }
+        for (const DynamicList<contact>& found : threadContacts_)
+        {
+            contacts_.append(found);
+        }
+    }
+    else
+    {
+        for (const labelPair& pr : pairScratch_)
+        {
+            pelletPair(pr.first(), pr.second());
+        }
     }
 
     if (withSleepers)
