@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <limits>
 #include <Eigen/Dense>
-#include <numeric>
 #include <vector>
 #include <cstdint>
 
@@ -18,17 +17,6 @@ namespace
 {
     using namespace Foam;
     using namespace Foam::rbd;
-
-    //- Union-find root with path halving
-    label findRoot(std::vector<label>& parent, label a)
-    {
-        while (parent[a] != a)
-        {
-            parent[a] = parent[parent[a]];
-            a = parent[a];
-        }
-        return a;
-    }
 
     //- Acceleration of the material point at p of body b under force F and
     //  torque tau (eq 29)
@@ -125,14 +113,11 @@ Foam::rbd::restingContactSolver::restingContactSolver
 
 void Foam::rbd::restingContactSolver::bodyBuffers::resize(const label n)
 {
-    const label n0 = parent.size();
+    const label n0 = listed.size();
     if (n <= n0)
     {
         return;
     }
-    parent.resize(n);
-    std::iota(parent.begin() + n0, parent.end(), n0);
-    islandOf.resize(n);
     listed.resize(n, false);
     for (List<vector>* f : {&Ffric, &tauFric, &Ftot, &tauTot})
     {
@@ -182,27 +167,8 @@ Foam::rbd::restingContactSolver::solve
     }
 
     // Islands: contacts connected through bodies that move
-    std::vector<label>& parent = buf_.parent;
-    for (const contact& c : contacts)
-    {
-        if (c.k >= 0 && !fixed[c.k])
-        {
-            parent[findRoot(parent, c.i)] = findRoot(parent, c.k);
-        }
-    }
-
-    std::vector<std::vector<label>>& islandOf = buf_.islandOf;
-    std::vector<label> roots;
-    forAll(contacts, ci)
-    {
-        const label r = findRoot(parent, contacts[ci].i);
-        if (islandOf[r].empty())
-        {
-            roots.push_back(r);
-        }
-        islandOf[r].push_back(ci);
-    }
-    res.islands = roots.size();
+    islands_.build(contacts, fixed, bodies.size());
+    res.islands = islands_.size();
 
     bool anyFriction = false;
     for (const contact& c : contacts)
@@ -564,11 +530,11 @@ Foam::rbd::restingContactSolver::solve
 
     // Pass 1: normal forces without friction
     List<scalar> phiAll(contacts.size(), scalar(0));
-    for (const label r : roots)
+    for (label s = 0; s < islands_.size(); ++s)
     {
         Eigen::VectorXd phi;
-        solveIsland(islandOf[r], Fext, tauExt, phi);
-        const std::vector<label>& island = islandOf[r];
+        const std::vector<label>& island = islands_.contacts(s);
+        solveIsland(island, Fext, tauExt, phi);
         for (size_t a = 0; a < island.size(); ++a)
         {
             phiAll[island[a]] = phi(a);
@@ -594,10 +560,10 @@ Foam::rbd::restingContactSolver::solve
         // their centres), and a coupled solve that fails: friction for the
         // frictionless normal forces, then the normal forces again
         std::vector<bool> staggered(contacts.size(), false);
-        std::vector<label> staggeredRoots;
-        for (const label r : roots)
+        std::vector<label> staggeredIslands;
+        for (label s = 0; s < islands_.size(); ++s)
         {
-            const std::vector<label>& island = islandOf[r];
+            const std::vector<label>& island = islands_.contacts(s);
             bool material = true;
             bool withFriction = false;
             for (const label ci : island)
@@ -621,7 +587,7 @@ Foam::rbd::restingContactSolver::solve
                 }
                 continue;
             }
-            staggeredRoots.push_back(r);
+            staggeredIslands.push_back(s);
             for (const label ci : island)
             {
                 staggered[ci] = true;
@@ -629,7 +595,7 @@ Foam::rbd::restingContactSolver::solve
         }
 
         // The staggered solve, for the islands that need it
-        if (!staggeredRoots.empty())
+        if (!staggeredIslands.empty())
         {
             // Friction from the predicted slip at the end of the step, clamped
             // to mu phi (eq 9); two Gauss-Seidel sweeps for coupled contacts
@@ -702,11 +668,11 @@ Foam::rbd::restingContactSolver::solve
                 Fb[b] = Fext[b] + Ffric[b];
                 tb[b] = tauExt[b] + tauFric[b];
             }
-            for (const label r : staggeredRoots)
+            for (const label s : staggeredIslands)
             {
                 Eigen::VectorXd phi;
-                solveIsland(islandOf[r], Fb, tb, phi);
-                const std::vector<label>& island = islandOf[r];
+                const std::vector<label>& island = islands_.contacts(s);
+                solveIsland(island, Fb, tb, phi);
                 for (size_t a = 0; a < island.size(); ++a)
                 {
                     phiAll[island[a]] = phi(a);
@@ -734,13 +700,9 @@ Foam::rbd::restingContactSolver::solve
     normalForces_ = phiAll;
 
     // The buffers as between solves
-    for (const label r : roots)
-    {
-        islandOf[r].clear();
-    }
+    islands_.clear();
     for (const label b : moved)
     {
-        parent[b] = b;
         Ffric[b] = Zero;
         tauFric[b] = Zero;
         buf_.listed[b] = false;
