@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "meshSolidSet.H"
+#include "volumeBelowPlane.H"
 #include "error.H"
 #include "mathematicalConstants.H"
 
@@ -17,14 +18,7 @@ using Foam::constant::mathematical::twoPi;
 namespace
 {
     using namespace Foam;
-
-    //- Twice the signed area of the triangle projected on the xy plane
-    inline scalar twiceAreaXY(const point& a, const point& b, const point& c)
-    {
-        return
-            (b.x() - a.x())*(c.y() - a.y())
-          - (b.y() - a.y())*(c.x() - a.x());
-    }
+    using Foam::rbd::twiceAreaXY;
 
     //- Twice the signed area of the 2D triangle (a, b, q)
     inline scalar cross2D
@@ -158,50 +152,9 @@ Foam::scalar Foam::rbd::meshSolidSet::volumeBelow
 
     // Sum of A_xy (zbar - c) over the parts of the triangles below c
     scalar V = 0;
-    point poly[4];
     for (const triFace& f : body_.faces())
     {
-        const point& a = p[f[0]];
-        const point& b = p[f[1]];
-        const point& d = p[f[2]];
-        const scalar zMax = std::max(a.z(), std::max(b.z(), d.z()));
-        const scalar zMin = std::min(a.z(), std::min(b.z(), d.z()));
-        if (zMin >= c)
-        {
-            continue;
-        }
-        if (zMax <= c)
-        {
-            V += 0.5*twiceAreaXY(a, b, d)*((a.z() + b.z() + d.z())/3 - c);
-            continue;
-        }
-
-        // Cut the triangle to z <= c (Sutherland-Hodgman, 3 or 4 points)
-        const point* v[3] = {&a, &b, &d};
-        int n = 0;
-        for (int k = 0; k < 3; ++k)
-        {
-            const point& u = *v[k];
-            const point& w = *v[(k + 1) % 3];
-            const bool uIn = u.z() <= c;
-            const bool wIn = w.z() <= c;
-            if (uIn)
-            {
-                poly[n++] = u;
-            }
-            if (uIn != wIn)
-            {
-                point x = u + (w - u)*((c - u.z())/(w.z() - u.z()));
-                x.z() = c;
-                poly[n++] = x;
-            }
-        }
-        for (int k = 1; k + 1 < n; ++k)
-        {
-            V +=
-                0.5*twiceAreaXY(poly[0], poly[k], poly[k + 1])
-               *((poly[0].z() + poly[k].z() + poly[k + 1].z())/3 - c);
-        }
+        addVolumeBelowPlane(p[f[0]], p[f[1]], p[f[2]], c, V);
     }
     return V;
 }

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "planeSection.H"
+#include "volumeBelowPlane.H"
 #include "foamFile.H"
 #include "boundBox.H"
 #include "error.H"
@@ -120,14 +121,6 @@ Foam::scalar Foam::rbd::planeSection::volumeBelow
     const point origin(boundBox(points).centre());
     const scalar c = z0 - origin.z();
 
-    // A_xy (zbar - c) of a triangle, coordinates relative to the origin
-    const auto part = [c](const point& a, const point& b, const point& d)
-    {
-        const scalar twiceAxy =
-            (b.x() - a.x())*(d.y() - a.y()) - (b.y() - a.y())*(d.x() - a.x());
-        return 0.5*twiceAxy*((a.z() + b.z() + d.z())/3 - c);
-    };
-
     scalar V = 0;
     for (label facei = nInternalFaces; facei < faces.size(); ++facei)
     {
@@ -140,37 +133,12 @@ Foam::scalar Foam::rbd::planeSection::volumeBelow
         fc = fc/f.size() - origin;
         forAll(f, i)
         {
-            const point tri[3] =
-            {
-                fc,
-                points[f[i]] - origin,
-                points[f.nextLabel(i)] - origin
-            };
-            // Cut the triangle to z <= c (Sutherland-Hodgman: 3 or 4
-            // points), fan the part
-            point poly[4];
-            label n = 0;
-            for (label k = 0; k < 3; ++k)
-            {
-                const point& u = tri[k];
-                const point& w = tri[(k + 1) % 3];
-                const bool uIn = u.z() <= c;
-                const bool wIn = w.z() <= c;
-                if (uIn)
-                {
-                    poly[n++] = u;
-                }
-                if (uIn != wIn)
-                {
-                    point x = u + (w - u)*((c - u.z())/(w.z() - u.z()));
-                    x.z() = c;
-                    poly[n++] = x;
-                }
-            }
-            for (label k = 1; k + 1 < n; ++k)
-            {
-                V += part(poly[0], poly[k], poly[k + 1]);
-            }
+            // Coordinates relative to the origin
+            addVolumeBelowPlane
+            (
+                fc, points[f[i]] - origin, points[f.nextLabel(i)] - origin,
+                c, V
+            );
         }
     }
     return V;
