@@ -35,21 +35,8 @@ set -u
 
 here="$(cd "$(dirname "$0")" && pwd)"
 
-for app in rbdPackBed rbdPressureDrop blockMesh snappyHexMesh simpleFoam
-do
-    if ! command -v "$app" >/dev/null 2>&1
-    then
-        echo "endToEndCaps: no $app on PATH (./Allwmake, etc/bashrc)" 1>&2
-        exit 1
-    fi
-done
-
-work="$(mktemp -d "${TMPDIR:-/tmp}/endToEndCaps.XXXXXX")"
-cp -r "$here/cases/endToEndCaps/." "$work"
-cd "$work" || exit 1
-
-testName=endToEndCaps
 . "$here/lib/caseSteps.sh"
+startCase endToEndCaps
 
 # true if awk's condition on the named values holds
 holds() { awk "BEGIN {exit !($1)}"; }

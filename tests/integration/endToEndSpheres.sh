@@ -59,21 +59,8 @@ refBedPorosity=0.555733     # [-]
 refDPdL=0.103434            # [m/s^2] dP/(rho L), floor to top of the bed
 maxDeviation=0.02           # [-] relative, on refDPdL
 
-for app in rbdPackBed rbdPressureDrop blockMesh snappyHexMesh simpleFoam
-do
-    if ! command -v "$app" >/dev/null 2>&1
-    then
-        echo "endToEndSpheres: no $app on PATH (./Allwmake, etc/bashrc)" 1>&2
-        exit 1
-    fi
-done
-
-work="$(mktemp -d "${TMPDIR:-/tmp}/endToEndSpheres.XXXXXX")"
-cp -r "$here/cases/endToEndSpheres/." "$work"
-cd "$work" || exit 1
-
-testName=endToEndSpheres
 . "$here/lib/caseSteps.sh"
+startCase endToEndSpheres
 
 total=$(date +%s.%N)
 echo "endToEndSpheres in $work"

@@ -1,6 +1,7 @@
 #------------------------------------------------------------------------------
-# Sourced by the end-to-end scripts, in their case directory $work, with
-# $testName set: fail MESSAGE (prints it, keeps the case, exits 1),
+# Sourced by the end-to-end scripts: startCase NAME (the tools on PATH,
+# cases/NAME copied into a new temporary $work, cd there, $testName NAME),
+# fail MESSAGE (prints it, keeps the case, exits 1),
 # run STEP COMMAND... (logs to log.STEP, prints its time, fails with the
 # log's tail when the command fails) and meshCase (blockMesh,
 # surfaceFeatureExtract, snappyHexMesh, checkMesh: 'Mesh OK.' and exactly
@@ -8,6 +9,24 @@
 # summary's releaseOverlap is 0: lib/summary.sh).
 #------------------------------------------------------------------------------
 . "$(dirname "${BASH_SOURCE[0]}")/summary.sh"
+caseStepsLib="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+
+startCase()
+{
+    testName="$1"
+    local app
+    for app in rbdPackBed rbdPressureDrop blockMesh snappyHexMesh simpleFoam
+    do
+        if ! command -v "$app" >/dev/null 2>&1
+        then
+            echo "$testName: no $app on PATH (./Allwmake, etc/bashrc)" 1>&2
+            exit 1
+        fi
+    done
+    work="$(mktemp -d "${TMPDIR:-/tmp}/$testName.XXXXXX")"
+    cp -r "$caseStepsLib/../cases/$testName/." "$work"
+    cd "$work" || exit 1
+}
 
 fail()
 {
