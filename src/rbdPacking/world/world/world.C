@@ -150,9 +150,21 @@ void Foam::rbd::world::setVelocity
 }
 
 
-void Foam::rbd::world::pelletPair(const label i, const label k)
+void Foam::rbd::world::pelletPair
+(
+    const labelPair& pr,
+    DynamicList<contact>& found,
+    const label thread
+) const
 {
-    dispatch_.pelletPair(i, bodies_[i], k, bodies_[k], contacts_);
+    // The awake body first where one sleeps
+    label i = pr.first();
+    label k = pr.second();
+    if (fixed_[i] && !fixed_[k])
+    {
+        std::swap(i, k);
+    }
+    dispatch_.pelletPair(i, bodies_[i], k, bodies_[k], found, thread);
 }
 
 
@@ -173,28 +185,15 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
     }
     neighbours_.update(x, 2*rb_ + band_);
 
-    // The pairs, the awake body first where one sleeps
-    pairScratch_.clear();
-    for
+    // The narrow phase of the pairs: mesh pairs on the threads, each a
+    // contiguous run of the pairs into its own list, joined in the runs'
+    // order, so that the contact list (and the packing) is the same for
+    // any number of threads. Sphere pairs cost less than a thread's start.
+    const UList<labelPair> pairs
     (
-        const labelPair& pr
-      : withSleepers ? UList<labelPair>(neighbours_.pairs()) : activePairs()
-    )
-    {
-        label i = pr.first();
-        label k = pr.second();
-        if (fixed_[i] && !fixed_[k])
-        {
-            std::swap(i, k);
-        }
-        pairScratch_.append(labelPair(i, k));
-    }
-
-    // Their narrow phase: mesh pairs on the threads, each a contiguous
-    // run of the pairs into its own list, joined in the runs' order, so
-    // that the contact list (and the packing) is the same for any number
-    // of threads. Sphere pairs cost less than a thread's start.
-    const label nPairs = pairScratch_.size();
+        withSleepers ? UList<labelPair>(neighbours_.pairs()) : activePairs()
+    );
+    const label nPairs = pairs.size();
     const label nThreads =
         dispatch_.meshes() ? min(controls_.threads, nPairs/2) : 1;
     if (nThreads > 1)
@@ -209,9 +208,7 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
             const label end = (nPairs*(t + 1))/nThreads;
             for (label p = begin; p < end; ++p)
             {
-                const label i = pairScratch_[p].first();
-                const label k = pairScratch_[p].second();
-                dispatch_.pelletPair(i, bodies_[i], k, bodies_[k], found, t);
+                pelletPair(pairs[p], found, t);
             }
         }
         for (const DynamicList<contact>& found : threadContacts_)
@@ -221,9 +218,9 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
     }
     else
     {
-        for (const labelPair& pr : pairScratch_)
+        for (const labelPair& pr : pairs)
         {
-            pelletPair(pr.first(), pr.second());
+            pelletPair(pr, contacts_, 0);
         }
     }
 
