@@ -99,4 +99,14 @@ Foam::string Foam::rbd::cylinder::volumeTrueConstruction() const
 }
 
 
+Foam::autoPtr<Foam::rbd::prismProfile> Foam::rbd::cylinder::prism() const
+{
+    return autoPtr<prismProfile>::New
+    (
+        List<vector2D>({vector2D::zero}), List<scalar>({0.5*d_}),
+        List<vector2D>(), List<scalar>(), 0.5*h_
+    );
+}
+
+
 // ************************************************************************* //

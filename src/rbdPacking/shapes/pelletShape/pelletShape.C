@@ -20,7 +20,7 @@ namespace rbd
 const Foam::wordList Foam::rbd::pelletShape::commonEntries
 ({
     "shape", "faces", "number", "fillHeight", "density", "friction",
-    "restitution", "rotation"
+    "restitution", "rollingFriction", "rotation"
 });
 
 

@@ -122,4 +122,14 @@ Foam::string Foam::rbd::ring::volumeTrueConstruction() const
 }
 
 
+Foam::autoPtr<Foam::rbd::prismProfile> Foam::rbd::ring::prism() const
+{
+    return autoPtr<prismProfile>::New
+    (
+        List<vector2D>({vector2D::zero}), List<scalar>({0.5*d_}),
+        List<vector2D>({vector2D::zero}), List<scalar>({0.5*di_}), 0.5*h_
+    );
+}
+
+
 // ************************************************************************* //
