@@ -104,6 +104,9 @@ const Foam::wordList Foam::rbd::packedBed::analysisEntries
 });
 
 
+const Foam::scalar Foam::rbd::packedBed::defaultExactRollingFriction = 0.1;
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
@@ -119,6 +122,10 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         getInRangeOrDefault
         (
             dict.subDict("pellets"), "restitution", 0.9, 0, 1, "-"
+        ),
+        getInRangeOrDefault
+        (
+            dict.subDict("pellets"), "rollingFriction", 0, 0, 1, "-"
         )
     },
     number_(0),
@@ -146,6 +153,19 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     const dictionary& containerDict = dict.subDict("container");
     const dictionary& pelletsDict = dict.subDict("pellets");
     const pelletShape& shape = shape_();
+
+    // Rolling resistance by default where the contacts roll without it:
+    // the exact round rims and walls of contactModel exact (a cylinder
+    // lying on the floor would otherwise roll until it met something;
+    // meshes resist by their polygons, spheres roll as in the paper)
+    if
+    (
+        !pelletsDict.found("rollingFriction")
+     && contactDispatch::pairModel(shape, controls_.contactModel) == "prism"
+    )
+    {
+        material_.rollingFriction = defaultExactRollingFriction;
+    }
 
     // A pellet of a sensible size first (an STL in the wrong unit would
     // otherwise be told of the tube it needs)
@@ -1097,6 +1117,7 @@ void Foam::rbd::packedBed::writeSettings(Ostream& os) const
     os.writeEntry("density", material_.density);
     os.writeEntry("friction", material_.friction);
     os.writeEntry("restitution", material_.restitution);
+    os.writeEntry("rollingFriction", material_.rollingFriction);
     os.writeEntry("rotation", Switch(rotates_));
     os.endBlock();
 

@@ -237,6 +237,29 @@ Foam::rbd::restingContactSolver::solve
                 relativeAcceleration(c, bodies, fixed, Fb, tb)
             );
             ddGap = (c.n & aRel) + 2*(c.nDot & vRel);
+            if (c.rhoI != 0 || c.rhoK != 0)
+            {
+                // Points that slide over round features (contact.H)
+                vector wRel(bodies[c.i].omega());
+                if (c.k >= 0 && !fixed[c.k])
+                {
+                    wRel -= bodies[c.k].omega();
+                }
+                const vector wPerp(wRel - (wRel & c.n)*c.n);
+                auto round = [&](const vector& a, const scalar rho)
+                {
+                    if (rho == 0)
+                    {
+                        return scalar(0);
+                    }
+                    // cos^2 of the feature plane's tilt to n, at least
+                    // 0.02^2: a face lying flat is held by its corners
+                    const scalar cc = max(1 - sqr(c.n & a), 4e-4);
+                    const scalar sDot = (wRel & (a ^ c.n));
+                    return rho/cc*(sqr(sDot)/cc - magSqr(wPerp));
+                };
+                ddGap += round(c.axisI, c.rhoI) + round(c.axisK, c.rhoK);
+            }
         }
         return ddGap + 2*(max(c.gap, scalar(0)) + h*vn)/sqr(h);
     };

@@ -28,22 +28,36 @@ Foam::rbd::contactDispatch::contactDispatch
     rb_(shape.boundingRadius()),
     band_(band),
     meshes_(),
+    prism_(),
+    prisms_(),
     hullRadius_(0),
     hullHalfHeight_(0),
     hullRimAngles_()
 {
-    if (usesMeshes(shape_, contactModel))
+    const word model(pairModel(shape_, contactModel));
+    const label nThreads = max(threads, label(1));
+    if (model == "prism")
     {
-        meshes_.setSize(max(threads, label(1)));
+        prism_ = shape_.prism();
+        prisms_.setSize(nThreads);
+        forAll(prisms_, t)
+        {
+            prisms_.set(t, new prismContacts(prism_(), band_));
+        }
+        return;
+    }
+    if (model == "mesh")
+    {
+        meshes_.setSize(nThreads);
         forAll(meshes_, t)
         {
             meshes_.set(t, new meshContacts(shape_.mesh(), band_));
         }
     }
 
-    // The container by the hull where the shape has one (contactModel
-    // mesh: by the mesh)
-    if (contactModel != "mesh")
+    // auto: the container by the hull where the shape has one (its rims
+    // as the mesh's polygons); contactModel mesh: by the mesh
+    if (model == "mesh" && contactModel != "mesh")
     {
         if (isA<cylinder>(shape_))
         {
@@ -70,13 +84,34 @@ Foam::rbd::contactDispatch::contactDispatch
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::rbd::contactDispatch::usesMeshes
+Foam::word Foam::rbd::contactDispatch::pairModel
 (
     const pelletShape& shape,
     const word& contactModel
 )
 {
-    return !shape.isSphere() || contactModel == "mesh";
+    if (contactModel == "mesh")
+    {
+        return "mesh";
+    }
+    if (shape.isSphere())
+    {
+        return "sphere";
+    }
+    const bool hasPrism = shape.prism().valid();
+    if (contactModel == "exact")
+    {
+        if (!hasPrism)
+        {
+            FatalErrorInFunction
+                << "contactModel exact: pellets of shape " << shape.type()
+                << " have no exact contacts (they have them: sphere,"
+                << " cylinder, ring, trilobe, quadrilobe, cylinderWithHoles);"
+                << " use contactModel auto or mesh" << exit(FatalError);
+        }
+        return "prism";
+    }
+    return "mesh";
 }
 
 
@@ -91,7 +126,11 @@ void Foam::rbd::contactDispatch::pelletPair
 ) const
 {
     const label start = contacts.size();
-    if (meshes())
+    if (!prisms_.empty())
+    {
+        prisms_[thread].prismPrism(i, bi, k, bk, contacts);
+    }
+    else if (meshes())
     {
         meshes_[thread].meshMesh(i, bi, k, bk, contacts);
     }
@@ -120,7 +159,11 @@ void Foam::rbd::contactDispatch::pelletContainer
     DynamicList<contact>& contacts
 ) const
 {
-    if (!meshes())
+    if (!prisms_.empty())
+    {
+        prisms_[0].prismTube(i, bi, tube_, contacts);
+    }
+    else if (!meshes())
     {
         sphereContacts::sphereTube(i, bi, rb_, tube_, band_, contacts);
     }
@@ -141,7 +184,14 @@ void Foam::rbd::contactDispatch::pelletContainer
 
 void Foam::rbd::contactDispatch::describe(Ostream& os) const
 {
-    if (meshes())
+    if (!prisms_.empty())
+    {
+        os  << "exact " << shape_.type() << " contacts (" << shape_.type()
+            << " features, " << prisms_[0].nSamples() << " samples of its"
+            << " rims and walls, against the other's exact signed distance,"
+            << " both ways) between pellets and with the container";
+    }
+    else if (meshes())
     {
         os  << "triangle meshes (" << shape_.mesh().nFaces()
             << " faces, " << meshes_[0].bvh().nodes().size()

@@ -55,6 +55,7 @@ void Foam::rbd::cylinderContacts::cylinderTube
     }
 
     const vector ax(bi.R() & vector(0, 0, 1));
+    const label nRim = rimAngles.size();
 
     auto add = [&](const point& p, const label part, const scalar gap)
     {
@@ -81,6 +82,14 @@ void Foam::rbd::cylinderContacts::cylinderTube
             c.p = p + 0.5*gap*er;
             c.rk = p + gap*er;
         }
+        if (nRim < 3)
+        {
+            // A circular rim: the point slides along it as the cylinder
+            // turns about its axis (contact.H); d its radial direction
+            const vector w(c.ri - ax*(ax & c.ri));
+            c.axisI = ax;
+            c.rhoI = -(c.n & w);
+        }
         contacts.append(c);
     };
 
@@ -88,7 +97,6 @@ void Foam::rbd::cylinderContacts::cylinderTube
     // axis) from the rim centre c: the circle's point, or the vertices of
     // the polygon edge its angle falls on
     const tensor& R = bi.R();
-    const label nRim = rimAngles.size();
     auto rimPoints = [&](const point& c, const vector& d, point q[2])
     {
         if (nRim < 3)

@@ -1147,7 +1147,9 @@ void Foam::rbd::meshContacts::reduce
     DynamicList<contact>& contacts,
     const label start,
     const scalar mergeDistance,
-    const scalar tier
+    const scalar tier,
+    const label keepAll,
+    const label laterCorners
 )
 {
     const label n = contacts.size() - start;
@@ -1246,6 +1248,10 @@ void Foam::rbd::meshContacts::reduce
                     return;
                 }
                 kept.push_back(a1);
+                if (t > 0 && laterCorners <= 2)
+                {
+                    return;
+                }
                 const vector e1(rel(a1));
 
                 // 3. the largest triangle
@@ -1369,7 +1375,7 @@ void Foam::rbd::meshContacts::reduce
             {
                 nNear += cs[a].gap - cs[level.front()].gap < 0.2*tier;
             }
-            if (t == 0 && nNear <= maxKeepAll)
+            if (t == 0 && nNear <= keepAll)
             {
                 for (const label a : level)
                 {

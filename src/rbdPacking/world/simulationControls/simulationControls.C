@@ -14,7 +14,7 @@
 
 const Foam::wordList Foam::rbd::simulationControls::contactModels
 ({
-    "auto", "mesh"
+    "auto", "exact", "mesh"
 });
 
 

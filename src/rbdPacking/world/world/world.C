@@ -35,7 +35,7 @@ Foam::rbd::world::world
     stepControl_
     (
         controls.gravity, controls.restingVelocity, band_, touch_, rb_,
-        !contactDispatch::usesMeshes(shape, controls.contactModel),
+        contactDispatch::pairModel(shape, controls.contactModel) == "sphere",
         container.radius()
     ),
     bodies_(),
@@ -64,6 +64,7 @@ Foam::rbd::world::world
         controls.dict, controls.restingCompliance,
         controls.restingFriction == "coupled"
     ),
+    rolling_(material.rollingFriction, 0.5*shape.diameter()),
     contacts_(),
     F_(),
     tau_(),
@@ -73,7 +74,7 @@ Foam::rbd::world::world
 {
     Info<< "Narrow phase (contactModel " << controls.contactModel << "): ";
     dispatch_.describe(Info);
-    if (dispatch_.meshes())
+    if (!dispatch_.spheres())
     {
         Info<< "; pellet pairs on " << controls.threads << " thread"
             << (controls.threads > 1 ? "s" : "");
@@ -195,7 +196,7 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
     );
     const label nPairs = pairs.size();
     const label nThreads =
-        dispatch_.meshes() ? min(controls_.threads, nPairs/2) : 1;
+        !dispatch_.spheres() ? min(controls_.threads, nPairs/2) : 1;
     if (nThreads > 1)
     {
         threadContacts_.setSize(nThreads);
@@ -451,6 +452,10 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
         const restingContactSolver::result rr = resting_.solve
         (
             bodies_, contacts_, fixed_, h, F_, tau_
+        );
+        rolling_.apply
+        (
+            bodies_, contacts_, resting_.normalForces(), fixed_, h, tau_
         );
         ++stats_.restingSolves;
         stats_.lcpIterations += rr.iterations;

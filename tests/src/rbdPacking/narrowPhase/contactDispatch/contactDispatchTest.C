@@ -32,17 +32,18 @@ namespace
 }
 
 
-TEST(contactDispatch, meshesForEveryShapeButSpheresUnlessAsked)
+TEST(contactDispatch, pairModelOfEachShapeAndContactModel)
 {
     const autoPtr<pelletShape> sphere(shapeOf("shape sphere; diameter 0.01;"));
     const autoPtr<pelletShape> cyl
     (
         shapeOf("shape cylinder; diameter 0.01; height 0.01; faces 200;")
     );
-    EXPECT_FALSE(contactDispatch::usesMeshes(sphere(), "auto"));
-    EXPECT_TRUE(contactDispatch::usesMeshes(sphere(), "mesh"));
-    EXPECT_TRUE(contactDispatch::usesMeshes(cyl(), "auto"));
-    EXPECT_TRUE(contactDispatch::usesMeshes(cyl(), "mesh"));
+    EXPECT_EQ(contactDispatch::pairModel(sphere(), "auto"), "sphere");
+    EXPECT_EQ(contactDispatch::pairModel(sphere(), "exact"), "sphere");
+    EXPECT_EQ(contactDispatch::pairModel(sphere(), "mesh"), "mesh");
+    EXPECT_EQ(contactDispatch::pairModel(cyl(), "exact"), "prism");
+    EXPECT_EQ(contactDispatch::pairModel(cyl(), "mesh"), "mesh");
 }
 
 

@@ -29,13 +29,14 @@ namespace
             const std::string& pellets,
             const std::string& simulation = "",
             const scalar mu = 0.3,
-            const scalar e = 0.3
+            const scalar e = 0.3,
+            const scalar muRolling = 0
         )
         :
             container(tubeDiameter, 1, mu, e),
             shape(pelletShape::New(parseDict(pellets))),
             controls(simulationDict(simulation)),
-            material{8030, mu, e},
+            material{8030, mu, e, muRolling},
             w()
         {
             w.reset(new world(container, shape(), material, true, controls));
@@ -163,6 +164,49 @@ TEST_P(restingCylinder, lyingOnItsSideStays)
     EXPECT_LT(s().currentMaxOverlap(), 1e-6);
 }
 
+TEST(rollingResistance, aRollingCylinderComesToRest)
+{
+    // A cylinder lying on the floor of a wide tube, rolling at 0.05 m/s
+    // (omega = v/r about its axis): on the exact round wall it rolls
+    // without loss, unless the contact resists rolling. mu_r = 0.1
+    // decelerates it at about mu_r g/(1.5) ~ 0.65 m/s^2: at rest (and
+    // asleep) well within 0.5 s, a few millimetres on, still lying; with
+    // mu_r = 0 it is still rolling after the same time
+    const scalar r = 0.005;
+    const scalar v = 0.05;
+    for (const scalar muR : {0.0, 0.1})
+    {
+        shapeScene s
+        (
+            0.1, cylinder10, "contactModel exact; sleepVelocity 0.001;",
+            0.3, 0.3, muR
+        );
+        const quaternion q(vector(1, 0, 0), 0.5*M_PI);
+        const point x0(0, 0, r);
+        s().addBody(x0, q);
+        // Axis along -y; rolling towards +x: omega = (v/r) (0, 1, 0) x ...
+        s().setVelocity(0, vector(v, 0, 0), vector(0, v/r, 0));
+
+        s().advance(0.5);
+        const rigidBody& b = s().bodies()[0];
+        const scalar speed = mag(b.v());
+        Info<< "[ measured ] mu_r " << muR << ": travelled "
+            << b.x().x() - x0.x() << " m, speed " << speed << " m/s"
+            << endl;
+        EXPECT_LT(mag(axisOf(b).z()), 1e-3);
+        EXPECT_NEAR(b.x().z(), r, 2e-6);
+        if (muR > 0)
+        {
+            EXPECT_LT(speed, 1e-4);
+            EXPECT_LT(b.x().x() - x0.x(), sqr(v)/(2*0.5*muR*9.81) + 1e-3);
+        }
+        else
+        {
+            EXPECT_GT(speed, 0.9*v);
+        }
+    }
+}
+
 TEST_P(restingCylinder, balancedOnItsRimFallsAndComesToRest)
 {
     shapeScene s(0.05, cylinder10, "contactModel " + GetParam() + ";");
@@ -185,7 +229,8 @@ TEST_P(restingCylinder, balancedOnItsRimFallsAndComesToRest)
 
 INSTANTIATE_TEST_SUITE_P
 (
-    contactModels, restingCylinder, ::testing::Values("auto", "mesh")
+    contactModels, restingCylinder,
+    ::testing::Values("auto", "mesh", "exact")
 );
 
 

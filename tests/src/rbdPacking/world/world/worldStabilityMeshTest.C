@@ -25,6 +25,7 @@
 #include <gtest/gtest.h>
 #include "../../testTools/worldFixture.H"
 #include "../../testTools/penetrationProbe.H"
+#include "packedBed.H"
 
 #include <iostream>
 #include <random>
@@ -66,13 +67,14 @@ namespace
         (
             const scalar tubeDiameter,
             const std::string& pellets,
-            const std::string& simulation = sleepOn
+            const std::string& simulation = sleepOn,
+            const scalar rollingFriction = 0
         )
         :
             container(tubeDiameter, 1, 0.6, 0.6),
             shape(pelletShape::New(parseDict(pellets))),
             controls(simulationDict(simulation)),
-            material{8030, 0.1, 0.9},
+            material{8030, 0.1, 0.9, rollingFriction},
             w(),
             probe(shape->mesh())
         {
@@ -538,7 +540,8 @@ TEST_P(cylinderOntoFloor, onAnEdgeAndOnACorner)
 
 INSTANTIATE_TEST_SUITE_P
 (
-    stabilityMesh, cylinderOntoFloor, ::testing::Values("auto", "mesh")
+    stabilityMesh, cylinderOntoFloor,
+    ::testing::Values("auto", "mesh", "exact")
 );
 
 
@@ -601,6 +604,45 @@ INSTANTIATE_TEST_SUITE_P
         // Rim onto the rim of the lower one's end
         cylinderDrop{"rimOnRim", vector(0, 1, 0), 60, 0.006},
         // Parallel, side on side
+        cylinderDrop{"parallel", vector(0, 1, 0), 90, 0.0005}
+    ),
+    [](const ::testing::TestParamInfo<cylinderDrop>& info)
+    {
+        return std::string(info.param.name);
+    }
+);
+
+
+//- The same drops on the exact solids (contactModel exact): round rims and
+//  walls roll without loss, so the rolling resistance of the contacts
+//  (rollingResistance) brings the cylinder to rest
+class cylinderOntoACylinderExact
+:
+    public ::testing::TestWithParam<cylinderDrop>
+{};
+
+TEST_P(cylinderOntoACylinderExact, lyingOnItsSideComesToRest)
+{
+    const cylinderDrop& d = GetParam();
+    meshScene s
+    (
+        0.04, cylinderDict, sleepOn + "contactModel exact;",
+        packedBed::defaultExactRollingFriction
+    );
+    s.addAt(0, 0, 0, about(vector(0, 1, 0), 90));
+    s.addAt(d.x, 0.0003, 0.01 + fall1, about(d.axis, d.degrees));
+    monitor m{s};
+    m.settleAndHold(d.name, 4);
+    m.expectHealthy(d.name);
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    stabilityMesh, cylinderOntoACylinderExact, ::testing::Values
+    (
+        cylinderDrop{"crossed", vector(1, 0, 0), 90, 0},
+        cylinderDrop{"cornerOnSide", vector(1, 1, 0), 40, 0.001},
+        cylinderDrop{"rimOnRim", vector(0, 1, 0), 60, 0.006},
         cylinderDrop{"parallel", vector(0, 1, 0), 90, 0.0005}
     ),
     [](const ::testing::TestParamInfo<cylinderDrop>& info)

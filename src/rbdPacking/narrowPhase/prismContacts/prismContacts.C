@@ -1,0 +1,712 @@
+/*---------------------------------------------------------------------------*\
+  rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "prismContacts.H"
+#include "cylinderContacts.H"
+#include "meshContacts.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::label Foam::rbd::prismContacts::groupSize = 6;
+
+const Foam::label Foam::rbd::prismContacts::samplesPerTurn = 24;
+
+const Foam::label Foam::rbd::prismContacts::keepAll = 0;
+
+const Foam::label Foam::rbd::prismContacts::laterCorners = 2;
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+    using namespace Foam::rbd;
+
+    //- The other prism seen from this one's profile frame: x_other =
+    //  M x + t
+    struct otherPrism
+    {
+        const prismProfile& other;
+        tensor M;
+        vector t;
+        scalar band;
+
+        bool near(const point& c, const scalar radius) const
+        {
+            const point q((M & c) + t);
+            const scalar reach = radius + band;
+            return
+                mag(q.z()) - other.halfHeight() < reach
+             && Foam::sqrt(sqr(q.x()) + sqr(q.y())) - other.outerRadius()
+              < reach;
+        }
+
+        scalar operator()(const point& x, vector& n) const
+        {
+            return other.signedDistance((M & x) + t, n);
+        }
+
+        //- The other's nearest arc (-1: a face)
+        label nearestArc(const point& x) const
+        {
+            vector n;
+            label arcI;
+            prismProfile::part where;
+            other.signedDistance((M & x) + t, n, arcI, where);
+            return where == prismProfile::part::face ? -1 : arcI;
+        }
+    };
+
+    //- The tube's lateral wall seen from a profile frame (x_world = M x +
+    //  t); n: the wall's normal into the tube, world frame
+    struct tubeWallDistance
+    {
+        tensor M;
+        vector t;
+        scalar R;
+        scalar band;
+
+        bool near(const point& c, const scalar radius) const
+        {
+            const point q((M & c) + t);
+            return tube::axialDistance(q) + radius > R - band;
+        }
+
+        scalar operator()(const point& x, vector& n) const
+        {
+            const point q((M & x) + t);
+            const scalar rho = tube::axialDistance(q);
+            n =
+                rho > VSMALL
+              ? vector(-q.x()/rho, -q.y()/rho, 0) : vector(-1, 0, 0);
+            return R - rho;
+        }
+
+        label nearestArc(const point&) const
+        {
+            return -1;
+        }
+    };
+
+    //- The tube's bottom (z = 0)
+    struct tubeBottomDistance
+    {
+        tensor M;
+        vector t;
+        scalar band;
+
+        bool near(const point& c, const scalar radius) const
+        {
+            return ((M & c) + t).z() - radius < band;
+        }
+
+        scalar operator()(const point& x, vector& n) const
+        {
+            n = vector(0, 0, 1);
+            return ((M & x) + t).z();
+        }
+
+        label nearestArc(const point&) const
+        {
+            return -1;
+        }
+    };
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rbd::prismContacts::prismContacts
+(
+    const prismProfile& profile,
+    const scalar band
+)
+:
+    profile_(profile),
+    band_(band),
+    mergeDistance_(1e-3*profile.boundingRadius()),
+    tolerance_(1e-6*profile.boundingRadius()),
+    rims_(),
+    laterals_(),
+    levels_(0),
+    hullRadius_(0),
+    f_(),
+    fGrid_(),
+    nGrid_(),
+    hits_()
+{
+    const scalar h = profile_.halfHeight();
+    const scalar spacing =
+        constant::mathematical::twoPi*profile_.outerRadius()/samplesPerTurn;
+    levels_ = 1 + min(label(8), max(label(2), label(std::ceil(2*h/spacing))));
+
+    forAll(profile_.arcs(), a)
+    {
+        rims_.push_back(sampleArc(a, -h));
+        rims_.push_back(sampleArc(a, h));
+        for (label m = 0; m < levels_; ++m)
+        {
+            laterals_.push_back(sampleArc(a, -h + (2*h*m)/(levels_ - 1)));
+        }
+    }
+
+    // One circle about the axis bounds the profile from outside, and the
+    // profile frame is the body frame: the exact cylinder contacts with
+    // the container apply
+    for (const prismProfile::arc& a : profile_.arcs())
+    {
+        if
+        (
+            a.sense > 0 && a.fullCircle() && mag(a.c) < 1e-12*a.r
+         && mag(a.r - profile_.outerRadius()) < 1e-12*a.r
+         && magSqr(profile_.Q() - tensor::I) < 1e-24
+         && mag(profile_.t()) < 1e-12*a.r
+        )
+        {
+            hullRadius_ = a.r;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+Foam::rbd::prismContacts::curve Foam::rbd::prismContacts::sampleArc
+(
+    const label arcI,
+    const scalar z
+) const
+{
+    const prismProfile::arc& a = profile_.arcs()[arcI];
+    curve cv;
+    cv.arc = arcI;
+    cv.z = z;
+    cv.wraps = a.fullCircle();
+    const label n =
+        max
+        (
+            label(2),
+            label
+            (
+                std::ceil
+                (
+                    samplesPerTurn*a.span/constant::mathematical::twoPi
+                  - 1e-9
+                )
+            )
+        );
+    const label nPoints = cv.wraps ? n : n + 1;
+    for (label j = 0; j < nPoints; ++j)
+    {
+        const scalar t = a.t0 + (a.span*j)/n;
+        const vector2D q(a.at(t));
+        cv.t.push_back(t);
+        cv.p.push_back(point(q.x(), q.y(), z));
+    }
+    for (label g0 = 0; g0 < nPoints; g0 += groupSize)
+    {
+        const label g1 = min(nPoints, g0 + groupSize);
+        point c(Zero);
+        for (label j = g0; j < g1; ++j)
+        {
+            c += cv.p[j];
+        }
+        c /= scalar(g1 - g0);
+        scalar r = 0;
+        for (label j = g0; j < g1; ++j)
+        {
+            r = max(r, mag(cv.p[j] - c));
+        }
+        // The arc between two samples bulges by at most r (1 - cos) of
+        // half the step: cover it
+        r += a.r*(1 - Foam::cos(0.5*a.span/n)) + 1e-12*a.r;
+        cv.groupCentre.push_back(c);
+        cv.groupRadius.push_back(r);
+    }
+    return cv;
+}
+
+
+template<class Distance>
+void Foam::rbd::prismContacts::scan
+(
+    const Distance& sd,
+    std::vector<hit>& hits
+) const
+{
+    const List<prismProfile::arc>& arcs = profile_.arcs();
+    const scalar h = profile_.halfHeight();
+    std::vector<vector> n;
+
+    // The signed distances of a curve's samples, GREAT in groups that
+    // cannot reach; whether any was computed
+    auto evaluate = [&](const curve& cv)
+    {
+        const label nS = cv.p.size();
+        f_.assign(nS, GREAT);
+        n.resize(nS);
+        bool any = false;
+        for (label g = 0; g < label(cv.groupCentre.size()); ++g)
+        {
+            if (!sd.near(cv.groupCentre[g], cv.groupRadius[g]))
+            {
+                continue;
+            }
+            any = true;
+            const label g1 = min(nS, (g + 1)*groupSize);
+            for (label j = g*groupSize; j < g1; ++j)
+            {
+                f_[j] = sd(cv.p[j], n[j]);
+            }
+        }
+        return any;
+    };
+
+    auto rimPoint = [&](const prismProfile::arc& a, const scalar t,
+        const scalar z)
+    {
+        const vector2D q(a.at(t));
+        return point(q.x(), q.y(), z);
+    };
+
+    // Rims: support points, and every local minimum refined
+    for (const curve& cv : rims_)
+    {
+        if (!evaluate(cv))
+        {
+            continue;
+        }
+        const prismProfile::arc& a = arcs[cv.arc];
+        const label nS = cv.p.size();
+        const scalar dt = cv.wraps ? a.span/nS : a.span/(nS - 1);
+        for (label j = 0; j < nS; ++j)
+        {
+            const scalar fj = f_[j];
+            if (fj < band_)
+            {
+                hits.push_back
+                (
+                    {cv.p[j], fj, n[j], cv.arc, sd.nearestArc(cv.p[j])}
+                );
+            }
+            // Between its neighbours the distance falls at most r dt
+            // below a sample (1-Lipschitz): refine where that may reach
+            // below the band
+            if (!(fj - a.r*dt < band_))
+            {
+                continue;
+            }
+            const label jm = cv.wraps ? (j + nS - 1) % nS : j - 1;
+            const label jp = cv.wraps ? (j + 1) % nS : j + 1;
+            const scalar fPrev = jm >= 0 ? f_[jm] : GREAT;
+            const scalar fNext = jp < nS ? f_[jp] : GREAT;
+            if (!(fj <= fPrev && fj <= fNext) || (fj == fPrev && jm < j))
+            {
+                continue;
+            }
+
+            // Golden section on [t - dt, t + dt] within the arc
+            scalar lo = cv.t[j] - dt;
+            scalar hi = cv.t[j] + dt;
+            if (!cv.wraps)
+            {
+                lo = max(lo, a.t0);
+                hi = min(hi, a.t0 + a.span);
+            }
+            const scalar ratio = 0.5*(Foam::sqrt(5.0) - 1);
+            vector nx;
+            scalar x1 = hi - ratio*(hi - lo);
+            scalar x2 = lo + ratio*(hi - lo);
+            scalar f1 = sd(rimPoint(a, x1, cv.z), nx);
+            scalar f2 = sd(rimPoint(a, x2, cv.z), nx);
+            while ((hi - lo)*a.r > tolerance_)
+            {
+                if (f1 <= f2)
+                {
+                    hi = x2;
+                    x2 = x1;
+                    f2 = f1;
+                    x1 = hi - ratio*(hi - lo);
+                    f1 = sd(rimPoint(a, x1, cv.z), nx);
+                }
+                else
+                {
+                    lo = x1;
+                    x1 = x2;
+                    f1 = f2;
+                    x2 = lo + ratio*(hi - lo);
+                    f2 = sd(rimPoint(a, x2, cv.z), nx);
+                }
+            }
+            const point pBest(rimPoint(a, 0.5*(lo + hi), cv.z));
+            const scalar fBest = sd(pBest, nx);
+            if (fBest < band_ && fBest < fj)
+            {
+                hits.push_back
+                (
+                    {pBest, fBest, nx, cv.arc, sd.nearestArc(pBest)}
+                );
+            }
+        }
+    }
+
+    // Lateral walls: every local minimum of the grid (angle x height,
+    // the end levels included: a minimum between the rim and the next
+    // level shows on the rim, where the rim's own refinement, along the
+    // rim only, would miss the height) refined in (t, z). Ties: the first
+    // of equal neighbours in grid order
+    const label nL = levels_;
+    const scalar dz = 2*h/(nL - 1);
+    std::vector<scalar>& grid = fGrid_;
+    std::vector<vector>& nGrid = nGrid_;
+    forAll(arcs, ai)
+    {
+        const prismProfile::arc& a = arcs[ai];
+        const curve& first = laterals_[ai*nL];
+        const label nS = first.p.size();
+        const scalar dt = first.wraps ? a.span/nS : a.span/(nS - 1);
+        const scalar reach = Foam::sqrt(sqr(a.r*dt) + sqr(dz));
+
+        grid.assign(nL*nS, GREAT);
+        nGrid.resize(nL*nS);
+        bool any = false;
+        for (label m = 0; m < nL; ++m)
+        {
+            if (evaluate(laterals_[ai*nL + m]))
+            {
+                any = true;
+                for (label j = 0; j < nS; ++j)
+                {
+                    grid[m*nS + j] = f_[j];
+                    nGrid[m*nS + j] = n[j];
+                }
+            }
+        }
+        if (!any)
+        {
+            continue;
+        }
+
+        const scalar tLo = first.wraps ? -GREAT : a.t0;
+        const scalar tHi = first.wraps ? GREAT : a.t0 + a.span;
+        for (label m = 0; m < nL; ++m)
+        {
+            for (label j = 0; j < nS; ++j)
+            {
+                const label at = m*nS + j;
+                const scalar fj = grid[at];
+                if (!(fj - reach < band_))
+                {
+                    continue;
+                }
+                bool isMin = true;
+                for (label dm = -1; dm <= 1 && isMin; ++dm)
+                {
+                    const label mm = m + dm;
+                    if (mm < 0 || mm >= nL)
+                    {
+                        continue;
+                    }
+                    for (label dj = -1; dj <= 1; ++dj)
+                    {
+                        if (dm == 0 && dj == 0)
+                        {
+                            continue;
+                        }
+                        label jj = j + dj;
+                        if (first.wraps)
+                        {
+                            jj = (jj + nS) % nS;
+                        }
+                        else if (jj < 0 || jj >= nS)
+                        {
+                            continue;
+                        }
+                        const label nb = mm*nS + jj;
+                        if (grid[nb] < fj || (grid[nb] == fj && nb < at))
+                        {
+                            isMin = false;
+                            break;
+                        }
+                    }
+                }
+                if (!isMin)
+                {
+                    continue;
+                }
+
+                // Compass search in (t, z)
+                scalar t = first.t[j], z = -h + dz*m, f = fj;
+                scalar st = dt, sz = dz;
+                vector nx(nGrid[at]);
+                for
+                (
+                    label iter = 0;
+                    iter < 400 && (st*a.r > tolerance_ || sz > tolerance_);
+                    ++iter
+                )
+                {
+                    bool moved = false;
+                    const scalar tt[4] = {t + st, t - st, t, t};
+                    const scalar zz[4] = {z, z, z + sz, z - sz};
+                    for (label q = 0; q < 4 && !moved; ++q)
+                    {
+                        const scalar tq = min(tHi, max(tLo, tt[q]));
+                        const scalar zq = min(h, max(-h, zz[q]));
+                        vector nq;
+                        const scalar fq = sd(rimPoint(a, tq, zq), nq);
+                        if (fq < f)
+                        {
+                            t = tq;
+                            z = zq;
+                            f = fq;
+                            nx = nq;
+                            moved = true;
+                        }
+                    }
+                    if (!moved)
+                    {
+                        st *= 0.5;
+                        sz *= 0.5;
+                    }
+                }
+                if (f < band_)
+                {
+                    const point pBest(rimPoint(a, t, z));
+                    hits.push_back
+                    (
+                        {pBest, f, nx, ai, sd.nearestArc(pBest)}
+                    );
+                }
+            }
+        }
+    }
+}
+
+
+Foam::scalar Foam::rbd::prismContacts::roundRadius
+(
+    const point& p,
+    const label arcI,
+    const tensor& R,
+    const vector& n
+) const
+{
+    const prismProfile::arc& a = profile_.arcs()[arcI];
+    const vector2D u2((vector2D(p.x(), p.y()) - a.c)/a.r);
+    return a.r*(n & (R & vector(u2.x(), u2.y(), 0)));
+}
+
+
+void Foam::rbd::prismContacts::addHits
+(
+    const std::vector<hit>& hits,
+    const label i,
+    const rigidBody& bi,
+    const label k,
+    const rigidBody& bk,
+    const bool fromK,
+    DynamicList<contact>& contacts
+) const
+{
+    // The hits' points are in the profile frame of the pellet they lie on
+    // (k if fromK), their normals in the other's profile frame
+    const rigidBody& on = fromK ? bk : bi;
+    const rigidBody& other = fromK ? bi : bk;
+    const tensor Rp(on.R() & profile_.Q());
+    const vector tp((on.R() & profile_.t()) + on.x());
+    const tensor Rn(other.R() & profile_.Q());
+    const vector to((other.R() & profile_.t()) + other.x());
+
+    for (const hit& hp : hits)
+    {
+        const point x((Rp & hp.p) + tp);
+        const vector m(Rn & hp.n);
+        const point y(x - hp.gap*m);
+        contact c;
+        c.i = i;
+        c.k = k;
+        c.gap = hp.gap;
+        c.p = x - 0.5*hp.gap*m;
+        c.e = 0;
+        c.mu = 0;
+        c.centreBased = false;
+        if (!fromK)
+        {
+            // x on i, y on k, m out of k
+            c.n = m;
+            c.ri = x - bi.x();
+            c.rk = y - bk.x();
+            c.nDot = (bk.omega() ^ c.n);
+        }
+        else
+        {
+            // x on k, y on i, m out of i
+            c.n = -m;
+            c.ri = y - bi.x();
+            c.rk = x - bk.x();
+            c.nDot = (bi.omega() ^ c.n);
+        }
+
+        // Round features: the axis and the signed radius of the motion
+        // of the contact point over them (contact.H), rho = -r (n . u) on
+        // i and r (n . u) on k, u the feature's radial direction
+        const vector axisOn(Rp & vector(0, 0, 1));
+        const vector axisOther(Rn & vector(0, 0, 1));
+        const scalar rhoOn = roundRadius(hp.p, hp.arc, Rp, c.n);
+        scalar rhoOther = 0;
+        if (hp.otherArc >= 0)
+        {
+            const point yo(Rn.T() & (y - to));
+            rhoOther = roundRadius(yo, hp.otherArc, Rn, c.n);
+        }
+        if (!fromK)
+        {
+            c.axisI = axisOn;
+            c.rhoI = -rhoOn;
+            c.axisK = axisOther;
+            c.rhoK = rhoOther;
+        }
+        else
+        {
+            c.axisI = axisOther;
+            c.rhoI = -rhoOther;
+            c.axisK = axisOn;
+            c.rhoK = rhoOn;
+        }
+        contacts.append(c);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::rbd::prismContacts::prismPrism
+(
+    const label i,
+    const rigidBody& bi,
+    const label k,
+    const rigidBody& bk,
+    DynamicList<contact>& contacts
+) const
+{
+    const label start = contacts.size();
+
+    // Profile frame of i to that of k: x_k = M x_i + t
+    const tensor& Q = profile_.Q();
+    const vector& tq = profile_.t();
+    const tensor RiQ(bi.R() & Q);
+    const tensor RkQ(bk.R() & Q);
+    const tensor M(RkQ.T() & RiQ);
+    const vector t
+    (
+        (RkQ.T() & ((bi.R() & tq) + bi.x() - bk.x() - (bk.R() & tq)))
+    );
+
+    hits_.clear();
+    scan(otherPrism{profile_, M, t, band_}, hits_);
+    addHits(hits_, i, bi, k, bk, false, contacts);
+
+    hits_.clear();
+    scan(otherPrism{profile_, M.T(), -(M.T() & t), band_}, hits_);
+    addHits(hits_, i, bi, k, bk, true, contacts);
+
+    meshContacts::reduce
+    (
+        contacts, start, mergeDistance_, 0.1*band_, keepAll, laterCorners
+    );
+}
+
+
+void Foam::rbd::prismContacts::prismTube
+(
+    const label i,
+    const rigidBody& bi,
+    const tube& container,
+    DynamicList<contact>& contacts
+) const
+{
+    if (hullRadius_ > 0)
+    {
+        cylinderContacts::cylinderTube
+        (
+            i, bi, hullRadius_, profile_.halfHeight(), container, band_,
+            contacts
+        );
+        return;
+    }
+
+    const point& x = bi.x();
+    const scalar rb = profile_.boundingRadius();
+    const scalar Rt = container.radius();
+    const bool nearBottom = x.z() - rb < band_;
+    const bool nearWall = tube::axialDistance(x) + rb > Rt - band_;
+    if (!nearBottom && !nearWall)
+    {
+        return;
+    }
+
+    const tensor M(bi.R() & profile_.Q());
+    const vector t((bi.R() & profile_.t()) + x);
+    const label start = contacts.size();
+
+    auto add = [&](const label part)
+    {
+        for (const hit& hp : hits_)
+        {
+            const point p((M & hp.p) + t);
+            contact c;
+            c.i = i;
+            c.k = part;
+            c.n = hp.n;
+            c.gap = hp.gap;
+            c.p = p - 0.5*hp.gap*hp.n;
+            c.nDot = Zero;
+            c.e = container.restitution();
+            c.mu = container.friction();
+            c.centreBased = false;
+            c.ri = p - x;
+            c.rk = p - hp.gap*hp.n;
+            c.axisI = (M & vector(0, 0, 1));
+            c.rhoI = -roundRadius(hp.p, hp.arc, M, hp.n);
+            contacts.append(c);
+        }
+    };
+    if (nearBottom)
+    {
+        hits_.clear();
+        scan(tubeBottomDistance{M, t, band_}, hits_);
+        add(tubeBottom);
+    }
+    if (nearWall)
+    {
+        hits_.clear();
+        scan(tubeWallDistance{M, t, Rt, band_}, hits_);
+        add(tubeWall);
+    }
+    meshContacts::reduce
+    (
+        contacts, start, mergeDistance_, 0.1*band_, keepAll, laterCorners
+    );
+}
+
+
+Foam::label Foam::rbd::prismContacts::nSamples() const
+{
+    label n = 0;
+    for (const curve& cv : rims_)
+    {
+        n += cv.p.size();
+    }
+    for (const curve& cv : laterals_)
+    {
+        n += cv.p.size();
+    }
+    return n;
+}
+
+
+// ************************************************************************* //
