@@ -130,6 +130,7 @@ Foam::rbd::prismContacts::prismContacts
     mergeDistance_(1e-3*profile.boundingRadius()),
     tolerance_(1e-6*profile.boundingRadius()),
     rims_(),
+    faces_(),
     laterals_(),
     levels_(0),
     hullRadius_(0),
@@ -142,6 +143,65 @@ Foam::rbd::prismContacts::prismContacts
     const scalar spacing =
         constant::mathematical::twoPi*profile_.outerRadius()/samplesPerTurn;
     levels_ = 1 + min(label(8), max(label(2), label(std::ceil(2*h/spacing))));
+
+    // End faces: each convex arc's centre, six points at half its radius
+    // and six at 0.8 of it around it (a ring's face lies beyond its
+    // bore), where inside the cross-section, clear of the boundary by a
+    // tenth of that radius
+    for (const scalar z : {-h, h})
+    {
+        curve cv;
+        cv.arc = -1;
+        cv.z = z;
+        cv.wraps = false;
+        for (const prismProfile::arc& a : profile_.arcs())
+        {
+            if (a.sense < 0)
+            {
+                continue;
+            }
+            for (label k = -1; k < 12; ++k)
+            {
+                const scalar phi = constant::mathematical::pi*(k + 0.5*(k/6))/3;
+                const scalar rq = k < 6 ? 0.5*a.r : 0.8*a.r;
+                const vector2D q
+                (
+                    k < 0
+                  ? a.c
+                  : a.c + rq*vector2D(Foam::cos(phi), Foam::sin(phi))
+                );
+                vector2D g;
+                label nearest;
+                if (profile_.distance2D(q, g, nearest) < -0.1*a.r)
+                {
+                    cv.t.push_back(0);
+                    cv.p.push_back(point(q.x(), q.y(), z));
+                }
+            }
+        }
+        const label nPoints = cv.p.size();
+        for (label g0 = 0; g0 < nPoints; g0 += groupSize)
+        {
+            const label g1 = min(nPoints, g0 + groupSize);
+            point c(Zero);
+            for (label j = g0; j < g1; ++j)
+            {
+                c += cv.p[j];
+            }
+            c /= scalar(g1 - g0);
+            scalar r = 0;
+            for (label j = g0; j < g1; ++j)
+            {
+                r = max(r, mag(cv.p[j] - c));
+            }
+            cv.groupCentre.push_back(c);
+            cv.groupRadius.push_back(r + 1e-12*profile_.boundingRadius());
+        }
+        if (nPoints)
+        {
+            faces_.push_back(cv);
+        }
+    }
 
     forAll(profile_.arcs(), a)
     {
@@ -484,6 +544,26 @@ void Foam::rbd::prismContacts::scan
             }
         }
     }
+
+    // End faces: support points, last (the reduction takes the first of
+    // equally deep points as the deepest: a rim point, a corner)
+    for (const curve& cv : faces_)
+    {
+        if (!evaluate(cv))
+        {
+            continue;
+        }
+        for (label j = 0; j < label(cv.p.size()); ++j)
+        {
+            if (f_[j] < band_)
+            {
+                hits.push_back
+                (
+                    {cv.p[j], f_[j], n[j], -1, sd.nearestArc(cv.p[j])}
+                );
+            }
+        }
+    }
 }
 
 
@@ -495,7 +575,20 @@ Foam::scalar Foam::rbd::prismContacts::roundRadius
     const vector& n
 ) const
 {
+    if (arcI < 0)
+    {
+        // A point of an end face: a material point
+        return 0;
+    }
     const prismProfile::arc& a = profile_.arcs()[arcI];
+    if (a.sense < 0)
+    {
+        // A concave arc (a bore): taken as a material point. Its term
+        // (the same with the opposite sign) fed ten times more overlap
+        // corrections into the ring beds than none (28 863 against 2 028,
+        // docs/exactContacts.md): not understood yet
+        return 0;
+    }
     const vector2D u2((vector2D(p.x(), p.y()) - a.c)/a.r);
     return a.r*(n & (R & vector(u2.x(), u2.y(), 0)));
 }
@@ -702,6 +795,10 @@ Foam::label Foam::rbd::prismContacts::nSamples() const
         n += cv.p.size();
     }
     for (const curve& cv : laterals_)
+    {
+        n += cv.p.size();
+    }
+    for (const curve& cv : faces_)
     {
         n += cv.p.size();
     }

@@ -290,6 +290,12 @@ Foam::scalar Foam::rbd::prismProfile::distance2D
     scalar best = GREAT;
     vector2D q(Zero);
     label bestArc = 0;
+
+    // The outward normal where the nearest point lies inside an arc: its
+    // radial direction, exact to round-off at any distance (p - q loses
+    // its digits close to the wall)
+    vector2D radial(Zero);
+    bool inArc = false;
     forAll(arcs_, k)
     {
         const arc& a = arcs_[k];
@@ -297,10 +303,12 @@ Foam::scalar Foam::rbd::prismProfile::distance2D
         const scalar rho = mag(d);
         scalar dist;
         vector2D qk;
+        bool inside = false;
         if (rho > VSMALL && a.within(d))
         {
             dist = mag(rho - a.r);
             qk = a.c + (a.r/rho)*d;
+            inside = true;
         }
         else if (a.fullCircle())
         {
@@ -321,19 +329,28 @@ Foam::scalar Foam::rbd::prismProfile::distance2D
             best = dist;
             q = qk;
             bestArc = k;
+            inArc = inside;
+            if (inside)
+            {
+                radial = (a.sense/rho)*d;
+            }
         }
     }
 
     nearestArc = bestArc;
     const scalar s = inside2D(p) ? -1 : 1;
     const arc& a = arcs_[bestArc];
-    if (best > 1e-12*a.r)
+    if (inArc)
+    {
+        g = radial;
+    }
+    else if (best > 1e-12*a.r)
     {
         g = (s/best)*(p - q);
     }
     else
     {
-        // On the boundary: the outward normal of the arc there
+        // At an end of an arc: the outward normal of the arc there
         g = (a.sense/a.r)*(q - a.c);
     }
     return s*best;
