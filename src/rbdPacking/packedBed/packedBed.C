@@ -154,6 +154,23 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     const dictionary& pelletsDict = dict.subDict("pellets");
     const pelletShape& shape = shape_();
 
+    // contactModel exact where the shape has no exact solid (stl)
+    if
+    (
+        controls_.contactModel == "exact"
+     && !shape.isSphere()
+     && !shape.prism().valid()
+    )
+    {
+        badEntry
+        (
+            dict.subDict("simulation"), "contactModel", word("exact"),
+            "auto or mesh for pellets/shape " + shape.type()
+          + " (exact contacts: sphere, cylinder, ring, trilobe, quadrilobe,"
+            " cylinderWithHoles)"
+        );
+    }
+
     // Rolling resistance by default where the contacts roll without it:
     // the exact round rims and walls of contactModel exact (a cylinder
     // lying on the floor would otherwise roll until it met something;

@@ -585,8 +585,11 @@ Foam::scalar Foam::rbd::prismContacts::roundRadius
     {
         // A concave arc (a bore): taken as a material point. Its term
         // (the same with the opposite sign) fed ten times more overlap
-        // corrections into the ring beds than none (28 863 against 2 028,
-        // docs/exactContacts.md): not understood yet
+        // corrections into a ring bed than none (28 863 against 2 028);
+        // the sign flipped helped one bed (2 438 against 29 447) and
+        // wrecked another (143 443 against 10 922): a convex wall inside
+        // a bore needs the relative curvature of both, not yet built
+        // (docs/exactContacts.md)
         return 0;
     }
     const vector2D u2((vector2D(p.x(), p.y()) - a.c)/a.r);
