@@ -135,6 +135,7 @@ Foam::rbd::prismContacts::prismContacts
     levels_(0),
     hullRadius_(0),
     f_(),
+    n_(),
     fGrid_(),
     nGrid_(),
     hits_()
@@ -291,51 +292,47 @@ Foam::rbd::prismContacts::curve Foam::rbd::prismContacts::sampleArc
 
 
 template<class Distance>
-void Foam::rbd::prismContacts::scan
+bool Foam::rbd::prismContacts::evaluate
+(
+    const Distance& sd,
+    const curve& cv
+) const
+{
+    const label nS = cv.p.size();
+    f_.assign(nS, GREAT);
+    n_.resize(nS);
+    bool any = false;
+    for (label g = 0; g < label(cv.groupCentre.size()); ++g)
+    {
+        if (!sd.near(cv.groupCentre[g], cv.groupRadius[g]))
+        {
+            continue;
+        }
+        any = true;
+        const label g1 = min(nS, (g + 1)*groupSize);
+        for (label j = g*groupSize; j < g1; ++j)
+        {
+            f_[j] = sd(cv.p[j], n_[j]);
+        }
+    }
+    return any;
+}
+
+
+template<class Distance>
+void Foam::rbd::prismContacts::scanRims
 (
     const Distance& sd,
     std::vector<hit>& hits
 ) const
 {
     const List<prismProfile::arc>& arcs = profile_.arcs();
-    const scalar h = profile_.halfHeight();
-    std::vector<vector> n;
-
-    // The signed distances of a curve's samples, GREAT in groups that
-    // cannot reach; whether any was computed
-    auto evaluate = [&](const curve& cv)
-    {
-        const label nS = cv.p.size();
-        f_.assign(nS, GREAT);
-        n.resize(nS);
-        bool any = false;
-        for (label g = 0; g < label(cv.groupCentre.size()); ++g)
-        {
-            if (!sd.near(cv.groupCentre[g], cv.groupRadius[g]))
-            {
-                continue;
-            }
-            any = true;
-            const label g1 = min(nS, (g + 1)*groupSize);
-            for (label j = g*groupSize; j < g1; ++j)
-            {
-                f_[j] = sd(cv.p[j], n[j]);
-            }
-        }
-        return any;
-    };
-
-    auto rimPoint = [&](const prismProfile::arc& a, const scalar t,
-        const scalar z)
-    {
-        const vector2D q(a.at(t));
-        return point(q.x(), q.y(), z);
-    };
+    std::vector<vector>& n = n_;
 
     // Rims: support points, and every local minimum refined
     for (const curve& cv : rims_)
     {
-        if (!evaluate(cv))
+        if (!evaluate(sd, cv))
         {
             continue;
         }
@@ -380,8 +377,8 @@ void Foam::rbd::prismContacts::scan
             vector nx;
             scalar x1 = hi - ratio*(hi - lo);
             scalar x2 = lo + ratio*(hi - lo);
-            scalar f1 = sd(rimPoint(a, x1, cv.z), nx);
-            scalar f2 = sd(rimPoint(a, x2, cv.z), nx);
+            scalar f1 = sd(onArc(a, x1, cv.z), nx);
+            scalar f2 = sd(onArc(a, x2, cv.z), nx);
             while ((hi - lo)*a.r > tolerance_)
             {
                 if (f1 <= f2)
@@ -390,7 +387,7 @@ void Foam::rbd::prismContacts::scan
                     x2 = x1;
                     f2 = f1;
                     x1 = hi - ratio*(hi - lo);
-                    f1 = sd(rimPoint(a, x1, cv.z), nx);
+                    f1 = sd(onArc(a, x1, cv.z), nx);
                 }
                 else
                 {
@@ -398,10 +395,10 @@ void Foam::rbd::prismContacts::scan
                     x1 = x2;
                     f1 = f2;
                     x2 = lo + ratio*(hi - lo);
-                    f2 = sd(rimPoint(a, x2, cv.z), nx);
+                    f2 = sd(onArc(a, x2, cv.z), nx);
                 }
             }
-            const point pBest(rimPoint(a, 0.5*(lo + hi), cv.z));
+            const point pBest(onArc(a, 0.5*(lo + hi), cv.z));
             const scalar fBest = sd(pBest, nx);
             if (fBest < band_ && fBest < fj)
             {
@@ -412,6 +409,19 @@ void Foam::rbd::prismContacts::scan
             }
         }
     }
+}
+
+
+template<class Distance>
+void Foam::rbd::prismContacts::scanWalls
+(
+    const Distance& sd,
+    std::vector<hit>& hits
+) const
+{
+    const List<prismProfile::arc>& arcs = profile_.arcs();
+    const scalar h = profile_.halfHeight();
+    std::vector<vector>& n = n_;
 
     // Lateral walls: every local minimum of the grid (angle x height,
     // the end levels included: a minimum between the rim and the next
@@ -435,7 +445,7 @@ void Foam::rbd::prismContacts::scan
         bool any = false;
         for (label m = 0; m < nL; ++m)
         {
-            if (evaluate(laterals_[ai*nL + m]))
+            if (evaluate(sd, laterals_[ai*nL + m]))
             {
                 any = true;
                 for (label j = 0; j < nS; ++j)
@@ -517,7 +527,7 @@ void Foam::rbd::prismContacts::scan
                         const scalar tq = min(tHi, max(tLo, tt[q]));
                         const scalar zq = min(h, max(-h, zz[q]));
                         vector nq;
-                        const scalar fq = sd(rimPoint(a, tq, zq), nq);
+                        const scalar fq = sd(onArc(a, tq, zq), nq);
                         if (fq < f)
                         {
                             t = tq;
@@ -535,7 +545,7 @@ void Foam::rbd::prismContacts::scan
                 }
                 if (f < band_)
                 {
-                    const point pBest(rimPoint(a, t, z));
+                    const point pBest(onArc(a, t, z));
                     hits.push_back
                     (
                         {pBest, f, nx, ai, sd.nearestArc(pBest)}
@@ -544,12 +554,23 @@ void Foam::rbd::prismContacts::scan
             }
         }
     }
+}
+
+
+template<class Distance>
+void Foam::rbd::prismContacts::scanFaces
+(
+    const Distance& sd,
+    std::vector<hit>& hits
+) const
+{
+    std::vector<vector>& n = n_;
 
     // End faces: support points, last (the reduction takes the first of
     // equally deep points as the deepest: a rim point, a corner)
     for (const curve& cv : faces_)
     {
-        if (!evaluate(cv))
+        if (!evaluate(sd, cv))
         {
             continue;
         }
@@ -564,6 +585,19 @@ void Foam::rbd::prismContacts::scan
             }
         }
     }
+}
+
+
+template<class Distance>
+void Foam::rbd::prismContacts::scan
+(
+    const Distance& sd,
+    std::vector<hit>& hits
+) const
+{
+    scanRims(sd, hits);
+    scanWalls(sd, hits);
+    scanFaces(sd, hits);
 }
 
 
