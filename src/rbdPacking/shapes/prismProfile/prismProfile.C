@@ -337,7 +337,7 @@ Foam::scalar Foam::rbd::prismProfile::distance2D
         }
     }
 
-    nearestArc = bestArc;
+    nearestArc = inArc ? bestArc : -1;
     const scalar s = inside2D(p) ? -1 : 1;
     const arc& a = arcs_[bestArc];
     if (inArc)

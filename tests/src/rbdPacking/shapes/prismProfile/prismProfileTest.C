@@ -470,18 +470,34 @@ TEST(prismProfile, signedDistanceIsTheDistanceToTheSampledSurface)
                 << c.name << " p " << str(p) << " foot " << str(foot);
 
             // The part named is where the foot is: a rim or a wall on the
-            // arc named, a face at |z| = h inside the cross-section
-            ASSERT_TRUE(arcI >= 0 && arcI < prof->arcs().size());
-            const prismProfile::arc& a = prof->arcs()[arcI];
+            // arc named (-1: at an end of an arc, a corner), a face at |z|
+            // = h inside the cross-section
+            ASSERT_TRUE(arcI >= -1 && arcI < prof->arcs().size());
             const vector2D f2(foot.x(), foot.y());
             const scalar eps = 1e-9*c.d;
-            const bool onArc =
-                mag(mag(f2 - a.c) - a.r) < eps
-             && (
-                    a.within(f2 - a.c)
-                 || mag(f2 - a.c - a.r*a.u0) < eps
-                 || mag(f2 - a.c - a.r*a.u1) < eps
-                );
+            bool onArc = false;
+            if (arcI >= 0)
+            {
+                const prismProfile::arc& a = prof->arcs()[arcI];
+                onArc =
+                    mag(mag(f2 - a.c) - a.r) < eps
+                 && (
+                        a.within(f2 - a.c)
+                     || mag(f2 - a.c - a.r*a.u0) < eps
+                     || mag(f2 - a.c - a.r*a.u1) < eps
+                    );
+            }
+            else
+            {
+                // A corner: the foot is an end of some arc
+                for (const prismProfile::arc& a : prof->arcs())
+                {
+                    onArc =
+                        onArc
+                     || mag(f2 - a.c - a.r*a.u0) < eps
+                     || mag(f2 - a.c - a.r*a.u1) < eps;
+                }
+            }
             const bool onEnd = mag(mag(foot.z()) - c.h) < eps;
             ++nPart[label(where)];
             if (where == prismProfile::part::rim)
