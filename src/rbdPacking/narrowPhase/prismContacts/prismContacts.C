@@ -186,25 +186,8 @@ Foam::rbd::prismContacts::prismContacts
                 }
             }
         }
-        const label nPoints = cv.p.size();
-        for (label g0 = 0; g0 < nPoints; g0 += groupSize)
-        {
-            const label g1 = min(nPoints, g0 + groupSize);
-            point c(Zero);
-            for (label j = g0; j < g1; ++j)
-            {
-                c += cv.p[j];
-            }
-            c /= scalar(g1 - g0);
-            scalar r = 0;
-            for (label j = g0; j < g1; ++j)
-            {
-                r = max(r, mag(cv.p[j] - c));
-            }
-            cv.groupCentre.push_back(c);
-            cv.groupRadius.push_back(r + 1e-12*profile_.boundingRadius());
-        }
-        if (nPoints)
+        boundGroups(cv, 1e-12*profile_.boundingRadius(), false);
+        if (cv.p.size())
         {
             faces_.push_back(cv);
         }
@@ -241,6 +224,38 @@ Foam::rbd::prismContacts::prismContacts
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
+void Foam::rbd::prismContacts::boundGroups
+(
+    curve& cv,
+    const scalar margin,
+    const bool toNext
+)
+{
+    const label nPoints = cv.p.size();
+    for (label g0 = 0; g0 < nPoints; g0 += groupSize)
+    {
+        const label g1 = min(nPoints, g0 + groupSize);
+        // Along a curve: the group's samples and the next group's first
+        // (or, wrapping, the first sample), so that the arc from this
+        // group to the next is covered too, not only the samples
+        const label gEnd = toNext && (cv.wraps || g1 < nPoints) ? g1 + 1 : g1;
+        point c(Zero);
+        for (label j = g0; j < gEnd; ++j)
+        {
+            c += cv.p[j % nPoints];
+        }
+        c /= scalar(gEnd - g0);
+        scalar r = 0;
+        for (label j = g0; j < gEnd; ++j)
+        {
+            r = max(r, mag(cv.p[j % nPoints] - c));
+        }
+        cv.groupCentre.push_back(c);
+        cv.groupRadius.push_back(r + margin);
+    }
+}
+
+
 Foam::rbd::prismContacts::curve Foam::rbd::prismContacts::sampleArc
 (
     const label arcI,
@@ -269,34 +284,12 @@ Foam::rbd::prismContacts::curve Foam::rbd::prismContacts::sampleArc
     for (label j = 0; j < nPoints; ++j)
     {
         const scalar t = a.t0 + (a.span*j)/n;
-        const vector2D q(a.at(t));
         cv.t.push_back(t);
-        cv.p.push_back(point(q.x(), q.y(), z));
+        cv.p.push_back(onArc(a, t, z));
     }
-    for (label g0 = 0; g0 < nPoints; g0 += groupSize)
-    {
-        const label g1 = min(nPoints, g0 + groupSize);
-        // The group's samples and the next group's first (or, wrapping,
-        // the first sample): the arc from this group to the next is
-        // covered too, not only the samples
-        const label gEnd = cv.wraps || g1 < nPoints ? g1 + 1 : g1;
-        point c(Zero);
-        for (label j = g0; j < gEnd; ++j)
-        {
-            c += cv.p[j % nPoints];
-        }
-        c /= scalar(gEnd - g0);
-        scalar r = 0;
-        for (label j = g0; j < gEnd; ++j)
-        {
-            r = max(r, mag(cv.p[j % nPoints] - c));
-        }
-        // The arc between two samples bulges by at most r (1 - cos) of
-        // half the step: cover it
-        r += a.r*(1 - Foam::cos(0.5*a.span/n)) + 1e-12*a.r;
-        cv.groupCentre.push_back(c);
-        cv.groupRadius.push_back(r);
-    }
+    // The arc between two samples bulges by at most r (1 - cos) of half
+    // the step: cover it
+    boundGroups(cv, a.r*(1 - Foam::cos(0.5*a.span/n)) + 1e-12*a.r, true);
     return cv;
 }
 

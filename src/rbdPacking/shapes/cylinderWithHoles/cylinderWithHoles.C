@@ -135,19 +135,13 @@ void Foam::rbd::cylinderWithHoles::write(Ostream& os) const
 
 Foam::autoPtr<Foam::rbd::prismProfile> Foam::rbd::cylinderWithHoles::prism() const
 {
-    const scalar rh = 0.5*dc_;
-    List<vector2D> centres(nHoles_);
-    forAll(centres, k)
-    {
-        const scalar theta = constant::mathematical::twoPi*k/nHoles_;
-        centres[k] = rh*vector2D(Foam::cos(theta), Foam::sin(theta));
-    }
     return inBodyFrame
     (
         autoPtr<prismProfile>::New
         (
             List<vector2D>({vector2D::zero}), List<scalar>({0.5*d_}),
-            centres, List<scalar>(nHoles_, 0.5*dh_), 0.5*h_
+            prismProfile::onCircle(nHoles_, 0.5*dc_),
+            List<scalar>(nHoles_, 0.5*dh_), 0.5*h_
         )
     );
 }

@@ -108,18 +108,12 @@ void Foam::rbd::lobedPellet::write(Ostream& os) const
 
 Foam::autoPtr<Foam::rbd::prismProfile> Foam::rbd::lobedPellet::prism() const
 {
-    const scalar rc = 0.5*dc_;
-    List<vector2D> centres(nLobes_);
-    forAll(centres, k)
-    {
-        const scalar theta = constant::mathematical::twoPi*k/nLobes_;
-        centres[k] = rc*vector2D(Foam::cos(theta), Foam::sin(theta));
-    }
     return inBodyFrame
     (
         autoPtr<prismProfile>::New
         (
-            centres, List<scalar>(nLobes_, 0.5*dl_),
+            prismProfile::onCircle(nLobes_, 0.5*dc_),
+            List<scalar>(nLobes_, 0.5*dl_),
             List<vector2D>(), List<scalar>(), 0.5*h_
         )
     );

@@ -234,6 +234,22 @@ void Foam::rbd::prismProfile::findArcs()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::List<Foam::vector2D> Foam::rbd::prismProfile::onCircle
+(
+    const label n,
+    const scalar r
+)
+{
+    List<vector2D> points(n);
+    forAll(points, k)
+    {
+        const scalar theta = constant::mathematical::twoPi*k/n;
+        points[k] = r*vector2D(Foam::cos(theta), Foam::sin(theta));
+    }
+    return points;
+}
+
+
 void Foam::rbd::prismProfile::setFrame(const tensor& Q, const vector& t)
 {
     Q_ = Q;

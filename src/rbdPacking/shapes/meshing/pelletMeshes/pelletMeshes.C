@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pelletMeshes.H"
+#include "prismProfile.H"
 #include <stdexcept>
 #include <string>
 #include "cgalMeshTools.H"
@@ -933,16 +934,13 @@ Foam::rbd::triMesh Foam::rbd::pelletMeshes::cylinderWithHoles
     const scalar rh =
         holeRadius(diameter, nHoles, holeDiameter, holeCircleRadius);
 
-    List<vector2D> centres(nHoles);
-    forAll(centres, k)
-    {
-        const scalar theta = twoPi*k/nHoles;
-        centres[k] = rh*vector2D(std::cos(theta), std::sin(theta));
-    }
-
     return prism
     (
-        holedDisk(0.5*diameter, centres, 0.5*holeDiameter),
+        holedDisk
+        (
+            0.5*diameter, prismProfile::onCircle(nHoles, rh),
+            0.5*holeDiameter
+        ),
         height,
         faces,
         placement
