@@ -13,11 +13,6 @@ namespace
     const scalar d = 0.01;
     const scalar band = 0.1*0.5*d;
 
-    autoPtr<pelletShape> shapeOf(const std::string& entries)
-    {
-        return pelletShape::New(parseDict(entries));
-    }
-
     std::string describe(const contactDispatch& cd)
     {
         OStringStream os;

@@ -10,6 +10,7 @@
 // the same configurations, to the mesh's resolution.
 
 #include <gtest/gtest.h>
+#include "../../testTools/worldFixture.H"
 #include "prismContacts.H"
 #include "meshContacts.H"
 #include "cylinderContacts.H"
@@ -28,19 +29,7 @@ using constant::mathematical::twoPi;
 
 namespace
 {
-    //- Components of a vector, for the messages of failed expectations
-    template<class Form, class Cmpt, direction n>
-    std::string str(const VectorSpace<Form, Cmpt, n>& v)
-    {
-        std::ostringstream os;
-        os << '(';
-        for (direction i = 0; i < n; ++i)
-        {
-            os << (i ? " " : "") << v[i];
-        }
-        os << ')';
-        return os.str();
-    }
+    using rbdTest::str;
 
     std::string str(const quaternion& q)
     {
@@ -107,8 +96,7 @@ namespace
             d(0),
             contacts()
         {
-            IStringStream is(entries);
-            shape = pelletShape::New(dictionary(is));
+            shape = rbdTest::shapeOf(entries);
             profile = shape->prism();
             band = 0.1*shape->boundingRadius();
             d = shape->diameter();

@@ -5,6 +5,7 @@
 // pellet shapes, and the profiles of the shapes against their meshes.
 
 #include <gtest/gtest.h>
+#include "../../testTools/worldFixture.H"
 #include "prismProfile.H"
 #include "pelletShape.H"
 #include "IStringStream.H"
@@ -21,19 +22,7 @@ using constant::mathematical::twoPi;
 
 namespace
 {
-    //- Components of a vector, for the messages of failed expectations
-    template<class Form, class Cmpt, direction n>
-    std::string str(const VectorSpace<Form, Cmpt, n>& v)
-    {
-        std::ostringstream os;
-        os << '(';
-        for (direction i = 0; i < n; ++i)
-        {
-            os << (i ? " " : "") << v[i];
-        }
-        os << ')';
-        return os.str();
-    }
+    using rbdTest::str;
 
     //- The signed distance alone, and the 2-D one
     scalar sdOf(const prismProfile& prof, const point& p)
@@ -53,11 +42,7 @@ namespace
         return prof.distance2D(p, g, arcI);
     }
 
-    autoPtr<pelletShape> shapeOf(const std::string& entries)
-    {
-        IStringStream is(entries);
-        return pelletShape::New(dictionary(is));
-    }
+    using rbdTest::shapeOf;
 
     //- A prism as the test knows it: solid discs and holes (profile
     //  frame), half height, its size d (outer diameter) and the dictionary

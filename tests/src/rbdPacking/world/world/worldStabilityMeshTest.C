@@ -560,6 +560,29 @@ void PrintTo(const cylinderDrop& d, std::ostream* os)
     *os << d.name;
 }
 
+namespace
+{
+
+//- The drops of a cylinder onto a lying one (mesh and exact suites)
+const cylinderDrop cylinderDrops[] =
+{
+    // Crossed, side edge on side edge (edge/edge)
+    {"crossed", vector(1, 0, 0), 90, 0},
+    // Rim corner first onto the side
+    {"cornerOnSide", vector(1, 1, 0), 40, 0.001},
+    // Rim onto the rim of the lower one's end
+    {"rimOnRim", vector(0, 1, 0), 60, 0.006},
+    // Parallel, side on side
+    {"parallel", vector(0, 1, 0), 90, 0.0005}
+};
+
+std::string dropName(const ::testing::TestParamInfo<cylinderDrop>& info)
+{
+    return std::string(info.param.name);
+}
+
+}
+
 class cylinderOntoACylinder : public ::testing::TestWithParam<cylinderDrop>
 {};
 
@@ -595,21 +618,8 @@ TEST_P(cylinderOntoACylinder, lyingOnItsSide)
 
 INSTANTIATE_TEST_SUITE_P
 (
-    stabilityMesh, cylinderOntoACylinder, ::testing::Values
-    (
-        // Crossed, side edge on side edge (edge/edge)
-        cylinderDrop{"crossed", vector(1, 0, 0), 90, 0},
-        // Rim corner first onto the side
-        cylinderDrop{"cornerOnSide", vector(1, 1, 0), 40, 0.001},
-        // Rim onto the rim of the lower one's end
-        cylinderDrop{"rimOnRim", vector(0, 1, 0), 60, 0.006},
-        // Parallel, side on side
-        cylinderDrop{"parallel", vector(0, 1, 0), 90, 0.0005}
-    ),
-    [](const ::testing::TestParamInfo<cylinderDrop>& info)
-    {
-        return std::string(info.param.name);
-    }
+    stabilityMesh, cylinderOntoACylinder, ::testing::ValuesIn(cylinderDrops),
+    dropName
 );
 
 
@@ -638,17 +648,8 @@ TEST_P(cylinderOntoACylinderExact, lyingOnItsSideComesToRest)
 
 INSTANTIATE_TEST_SUITE_P
 (
-    stabilityMesh, cylinderOntoACylinderExact, ::testing::Values
-    (
-        cylinderDrop{"crossed", vector(1, 0, 0), 90, 0},
-        cylinderDrop{"cornerOnSide", vector(1, 1, 0), 40, 0.001},
-        cylinderDrop{"rimOnRim", vector(0, 1, 0), 60, 0.006},
-        cylinderDrop{"parallel", vector(0, 1, 0), 90, 0.0005}
-    ),
-    [](const ::testing::TestParamInfo<cylinderDrop>& info)
-    {
-        return std::string(info.param.name);
-    }
+    stabilityMesh, cylinderOntoACylinderExact,
+    ::testing::ValuesIn(cylinderDrops), dropName
 );
 
 
