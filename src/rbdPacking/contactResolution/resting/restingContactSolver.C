@@ -97,13 +97,15 @@ Foam::rbd::restingContactSolver::restingContactSolver
 (
     const dictionary& dict,
     const scalar compliance,
-    const bool coupled
+    const bool coupled,
+    const label frictionRounds
 )
 :
     solver_(lcpSolver::New(dict)),
     boxed_(),
     assembly_(compliance),
     coupled_(coupled),
+    frictionRounds_(frictionRounds),
     normalForces_(),
     active_()
 {}

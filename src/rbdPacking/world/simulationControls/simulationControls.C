@@ -5,6 +5,7 @@
 #include "simulationControls.H"
 #include "dictionaryChecks.H"
 #include "lcpSolver.H"
+#include "restingContactSolver.H"
 #include "IStringStream.H"
 #ifdef _OPENMP
 #include <omp.h>
@@ -33,7 +34,7 @@ const Foam::wordList Foam::rbd::simulationControls::knownEntries
     "settleTime", "settleEnergy", "logInterval", "checkpointInterval",
     "writeInterval", "threads",
     "lcpSolver", "restingCompliance", "contactModel", "restingFriction",
-    "preset"
+    "frictionRounds", "preset"
 });
 
 
@@ -64,7 +65,7 @@ Foam::dictionary Foam::rbd::simulationControls::presetEntries
         text =
             "deltaT 0.05; restingVelocity 0.02; proximity 0.2;"
             "contactTolerance 1e-3; lcpSolver blockPivoting;"
-            "blockPivotingCoeffs { tolerance 1e-7; }";
+            "blockPivotingCoeffs { tolerance 1e-7; } frictionRounds 2;";
     }
     else if (name == "accurate")
     {
@@ -176,6 +177,14 @@ Foam::rbd::simulationControls::simulationControls
     (
         getChoiceOrDefault(d, "restingFriction", "coupled", restingFrictions)
     ),
+    frictionRounds
+    (
+        getLabelOrDefault
+        (
+            d, "frictionRounds", restingContactSolver::defaultFrictionRounds,
+            1, 100
+        )
+    ),
     preset(d.getOrDefault<word>("preset", "default")),
     dict(d)
 {
@@ -267,6 +276,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("restingCompliance", restingCompliance);
     os.writeEntry("contactModel", contactModel);
     os.writeEntry("restingFriction", restingFriction);
+    os.writeEntry("frictionRounds", frictionRounds);
 }
 
 

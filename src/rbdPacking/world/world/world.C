@@ -62,7 +62,7 @@ Foam::rbd::world::world
     resting_
     (
         controls.dict, controls.restingCompliance,
-        controls.restingFriction == "coupled"
+        controls.restingFriction == "coupled", controls.frictionRounds
     ),
     rolling_(material.rollingFriction, 0.5*shape.diameter()),
     contacts_(),

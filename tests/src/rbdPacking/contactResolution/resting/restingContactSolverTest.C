@@ -199,7 +199,13 @@ namespace
         //- The normal forces [N]
         List<scalar> phi;
 
-        incline(const scalar tiltDeg, const scalar mu, const bool coupled)
+        incline
+        (
+            const scalar tiltDeg,
+            const scalar mu,
+            const bool coupled,
+            const label rounds = restingContactSolver::defaultFrictionRounds
+        )
         {
             const scalar tilt = tiltDeg*M_PI/180;
             const vector n(Foam::sin(tilt), 0, Foam::cos(tilt));
@@ -227,7 +233,7 @@ namespace
 
             const restingContactSolver rs
             (
-                rbdTest::parseDict(""), 1e-5, coupled
+                rbdTest::parseDict(""), 1e-5, coupled, rounds
             );
             List<vector> Fs(1, vector(0, 0, -m*g));
             List<vector> taus(1, Zero);
@@ -255,6 +261,37 @@ TEST(restingFriction, holdsACylinderOnAnInclineForTheForcesApplied)
     for (const scalar p : held.phi)
     {
         EXPECT_GE(p, 0);
+    }
+}
+
+
+TEST(restingFriction, everyRoundCapHoldsAndSlidesAtCoulomb)
+{
+    // frictionRounds caps the coupled solves of an island; a round's
+    // friction bounds are mu phi of the normal forces of the round before
+    // (the first: of the frictionless solve). Normal forces and friction
+    // are solved together in every round, so friction inside its bounds
+    // (20 deg, mu 0.5: tan 20 = 0.36) holds the cylinder with one round
+    // already; at the bounds (35 deg, mu 0.3: sliding) the first round's
+    // bounds come from the frictionless normal forces, which carry the
+    // same total on a single plane: the Coulomb rate to 1e-3 again
+    const scalar tilt = 35*M_PI/180;
+    const scalar mu = 0.3;
+    const scalar exact = g*(Foam::sin(tilt) - mu*Foam::cos(tilt));
+    for (const label rounds : {1, 2, 4})
+    {
+        const incline held(20, 0.5, true, rounds);
+        const incline sliding(35, mu, true, rounds);
+        std::cout
+            << "[ measured ] frictionRounds " << rounds << ": held residual "
+            << held.residual << " m/s, sliding downhill/exact "
+            << sliding.downhill/exact << std::endl;
+        EXPECT_LT(held.residual, 1e-6) << rounds;
+        EXPECT_NEAR(sliding.downhill, exact, 1e-3*exact) << rounds;
+        for (const scalar p : held.phi)
+        {
+            EXPECT_GE(p, 0) << rounds;
+        }
     }
 }
 

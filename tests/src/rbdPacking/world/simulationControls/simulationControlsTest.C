@@ -29,6 +29,7 @@ TEST(simulationControls, defaults)
     EXPECT_DOUBLE_EQ(c.sleepVelocity, 0.001);
     EXPECT_DOUBLE_EQ(c.wakeVelocity, 0.3);
     EXPECT_EQ(c.restingFriction, "coupled");
+    EXPECT_EQ(c.frictionRounds, 4);
 }
 
 
@@ -129,6 +130,8 @@ TEST(simulationControls, presetsOrderTheAccuracyKnobs)
     EXPECT_LT(a.contactTolerance, d.contactTolerance);
     EXPECT_GE(f.proximity, d.proximity);
     EXPECT_LE(a.proximity, d.proximity);
+    EXPECT_LT(f.frictionRounds, d.frictionRounds);
+    EXPECT_GE(a.frictionRounds, d.frictionRounds);
 
     // ... and the values are the listed ones
     for (const word& name : rbd::simulationControls::presets)
@@ -228,6 +231,27 @@ TEST(simulationControlsDeath, unknownRestingFrictionListsTheAllowedOnes)
         rbd::simulationControls(parse("restingFriction exact;")),
         ::testing::ExitedWithCode(1),
         "restingFriction(.|\n)*exact(.|\n)*coupled(.|\n)*staggered"
+    );
+}
+
+
+TEST(simulationControls, frictionRoundsIsEchoed)
+{
+    const rbd::simulationControls c(parse("frictionRounds 2;"));
+    EXPECT_EQ(c.frictionRounds, 2);
+    OStringStream os;
+    c.write(os);
+    EXPECT_EQ(parse(os.str()).get<label>("frictionRounds"), 2);
+}
+
+
+TEST(simulationControlsDeath, frictionRoundsOutOfRange)
+{
+    EXPECT_EXIT
+    (
+        rbd::simulationControls(parse("frictionRounds 0;")),
+        ::testing::ExitedWithCode(1),
+        "frictionRounds(.|\n)*0"
     );
 }
 
