@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "cylinderContacts.H"
+#include "floorSupport.H"
+#include "mathematicalConstants.H"
 
 #include <algorithm>
 #include <vector>
@@ -137,6 +139,7 @@ void Foam::rbd::cylinderContacts::cylinderTube
         {
             const vector w(normalTo(vector(0, 0, -1), ax));
             const vector u(ax ^ w);
+            const label start = contacts.size();
             for (const vector& d : {w, u, -w, -u})
             {
                 const label nq = rimPoints(c, d, q);
@@ -147,6 +150,40 @@ void Foam::rbd::cylinderContacts::cylinderTube
                         add(q[k], tubeBottom, q[k].z());
                     }
                 }
+            }
+            {
+                // The rim's points that one step can bring down, beside the
+                // four candidates (floorSupport): the polygon's vertices,
+                // or points of the circle every 360/nCircleSamples degrees
+                // (material points: they turn with the body)
+                const label kept = contacts.size();
+                const label nSample = nRim >= 3 ? nRim : nCircleSamples;
+                for (label k = 0; k < nSample; ++k)
+                {
+                    const scalar t =
+                        nRim >= 3
+                      ? rimAngles[k]
+                      : constant::mathematical::twoPi*k/nSample;
+                    const point p
+                    (
+                        c + a*(bi.R() & vector(Foam::cos(t), Foam::sin(t), 0))
+                    );
+                    if (p.z() < band)
+                    {
+                        add(p, tubeBottom, p.z());
+                        contacts.last().axisI = Zero;
+                        contacts.last().rhoI = 0;
+                    }
+                }
+                const std::vector<contact> rim
+                (
+                    contacts.begin() + kept, contacts.end()
+                );
+                contacts.setSize(kept);
+                floorSupport::addNear
+                (
+                    rim, floorNearSpan*band, 1e-9*a, start, contacts
+                );
             }
         }
 

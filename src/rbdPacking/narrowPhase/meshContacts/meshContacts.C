@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "meshContacts.H"
+#include "floorSupport.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -981,7 +982,19 @@ void Foam::rbd::meshContacts::meshTube
         c.rk = point(p.x(), p.y(), 0);
         contacts.append(c);
     }
-    reduce(contacts, start, mergeDistance_, 0.1*band_);
+    {
+        // The corners of the support, and the points one step can bring
+        // down beside them (floorSupport)
+        const std::vector<contact> all
+        (
+            contacts.begin() + start, contacts.end()
+        );
+        reduce(contacts, start, mergeDistance_, 0.1*band_);
+        floorSupport::addNear
+        (
+            all, floorNearSpan*band_, mergeDistance_, start, contacts
+        );
+    }
 
     start = contacts.size();
     for (const label v : wallPts)

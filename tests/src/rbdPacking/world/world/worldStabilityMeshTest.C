@@ -497,44 +497,8 @@ TEST_P(cylinderOntoFloor, onAnEdgeAndOnACorner)
         const std::string what =
             "cylinder onto floor, tilt " + std::to_string(tilt)
           + ", " + GetParam();
-        if (tilt == 90 && GetParam() == "mesh")
-        {
-            // Compliant resting forces (the default): not asserted to
-            // settle. The 300-face cylinder ends standing on its face and
-            // here wobbles on it for ever (tilt 0.4 deg, 4 rad/s, 9e-7 J):
-            // the contact reduction (meshContacts::reduce) keeps corners of
-            // the face's rim vertices, the next vertex lands unseen beyond
-            // the slop, and the overlap correction that lifts it (470
-            // times per second) feeds the wobble. The exact solve settles
-            // on this trajectory (asserted below), but wobbled the same way
-            // on another (stepped in 0.1 s chunks, sleep off). Keeping up
-            // to 32 points (maxKeepAll) ended it, at twice the cost of a
-            // small cylinder bed. The invariants hold
-            m.runUntil(4);
-            m.report(what);
-            m.expectHealthy(what);
-
-            meshScene exact
-            (
-                0.04, cylinderDict,
-                sleepOn + "contactModel mesh; restingCompliance 0;"
-            );
-            exact.addAt(0, 0, fall1, about(vector(1, 0, 0), tilt));
-            monitor me{exact};
-            me.settleAndHold(what + ", exact", 4);
-            me.expectHealthy(what + ", exact");
-            continue;
-        }
         m.settleAndHold(what, 4);
         m.expectHealthy(what);
-    }
-    if (GetParam() == "mesh")
-    {
-        GTEST_SKIP()
-            << "settling of the side-edge drop with compliant forces (the "
-               "rest of this case ran and passed): a wobble on the face is "
-               "fed by the overlap correction of rim vertices the contact "
-               "reduction dropped (meshContacts)";
     }
 }
 
@@ -593,25 +557,6 @@ TEST_P(cylinderOntoACylinder, lyingOnItsSide)
     s.addAt(0, 0, 0, about(vector(0, 1, 0), 90));
     s.addAt(d.x, 0.0003, 0.01 + fall1, about(d.axis, d.degrees));
     monitor m{s};
-    if (std::string(d.name) == "rimOnRim")
-    {
-        // Known gap (not in the narrow phase): the upper cylinder bounces
-        // off onto the floor and spins on its rim like Euler's disk. With
-        // circular rims the rim-floor contact was the lowest point of the
-        // circle, not a material point, held by the resting solve as if
-        // it were one: the rim sank 0.3-1 um per step, the overlap
-        // correction lifted it, and the spin gained energy (1.3e-4 J fed
-        // in over 3 s; it fell flat at 3.5 s and slept at 5.5 s). The
-        // rims are now the mesh's polygons (vertices: material points),
-        // and it still does not settle by 4 s (not diagnosed again). The
-        // invariants hold meanwhile.
-        m.runUntil(3);
-        m.report(d.name);
-        m.expectHealthy(d.name);
-        GTEST_SKIP()
-            << "settling: an Euler's disk spin on the exact rim contact is "
-               "fed by the overlap correction (restingContactSolver)";
-    }
     m.settleAndHold(d.name, 4);
     m.expectHealthy(d.name);
 }
