@@ -301,6 +301,51 @@ Foam::List<Foam::rbd::triMesh> Foam::rbd::bedOutput::pelletSurfaces
                 }
             }
         }
+
+        // Caps at the wall for pellets that reach it without a touching
+        // contact: the written solids stand out of the true surface (the
+        // volume-true facets, up to about 2 % of r at a coarse rim), so a
+        // rim 0.01-0.02 dp from the wall, beyond contactGap, crossed it in
+        // pellets.stl uncapped. Each is cut by the wall's tangent plane at
+        // its outermost vertex, capHeight inside, until none reaches
+        // beyond R - capHeight/2
+        if (treatment == "caps")
+        {
+            const scalar R = tube_.radius();
+            const scalar hc = settings.capHeight();
+            for (label i = 0; i < bodies_.size(); ++i)
+            {
+                for (label pass = 0; pass < 4; ++pass)
+                {
+                    scalar rhoMax = 0;
+                    point outer(Zero);
+                    for (const point& x : surfaces[i].points())
+                    {
+                        const scalar rho = tube::axialDistance(x);
+                        if (rho > rhoMax)
+                        {
+                            rhoMax = rho;
+                            outer = x;
+                        }
+                    }
+                    // Beyond R - hc/2: the cut faces of caps already made
+                    // stand at R - hc where the wall is tangent, a little
+                    // further out beside it (a second plane there cut
+                    // slivers that CGAL's clipping refused)
+                    if (rhoMax <= R - 0.5*hc)
+                    {
+                        break;
+                    }
+                    const vector er(outer.x()/rhoMax, outer.y()/rhoMax, 0);
+                    surfaces[i] = contactGeometry::cap
+                    (
+                        surfaces[i], point(R*er.x(), R*er.y(), outer.z()),
+                        -er, hc
+                    );
+                    ++nTreated;
+                }
+            }
+        }
     }
     return List<triMesh>(std::move(surfaces));
 }

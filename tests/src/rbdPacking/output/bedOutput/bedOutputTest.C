@@ -135,3 +135,61 @@ TEST(bedOutput, cylindersWriteMeshesProfilesAndOrientation)
 
     Foam::rmDir(dir);
 }
+
+
+TEST(bedOutput, capsCutAPelletAtTheWallWithoutATouchingContact)
+{
+    // An upright cylinder whose exact rim reaches 10 um beyond the wall (an
+    // overlap of 0.1 % dp) and no contact in the list: with caps it is cut
+    // by the wall's tangent plane, its written surface ending capHeight/2
+    // or more inside the wall; without a treatment it crosses the wall
+    const scalar R = 0.02;
+    const rbd::tube container(parse("diameter 0.04; height 0.1;"));
+    autoPtr<rbd::pelletShape> shape = rbd::pelletShape::New
+    (
+        parse("shape cylinder; diameter 0.01; height 0.01; faces 400;")
+    );
+    const vector I = shape->principalInertiaPerDensity();
+    List<rbd::rigidBody> bodies;
+    bodies.append(rbd::rigidBody(1, I, point(R - 0.005 + 1e-5, 0, 0.005),
+        quaternion(1), true));
+    const fileName dir
+    (
+        "/tmp/rbdBedOutputWallCapTest-" + std::to_string(::getpid())
+    );
+    rbd::bedOutput out(dir, container, shape(), bodies);
+    const List<rbd::contact> none;
+    auto reach = [](const rbd::triMesh& m)
+    {
+        scalar rho = 0;
+        for (const point& x : m.points())
+        {
+            rho = max(rho, rbd::tube::axialDistance(x));
+        }
+        return rho;
+    };
+
+    label n = -1;
+    const rbd::bedCaseSettings plain
+    (
+        0.04, shape->volumeEquivalentDiameter(), point::zero,
+        parse("contactTreatment none;")
+    );
+    EXPECT_GT(reach(out.pelletSurfaces(plain, none, n)[0]), R);
+
+    const scalar hc = 0.0002;
+    const rbd::bedCaseSettings caps
+    (
+        0.04, shape->volumeEquivalentDiameter(), point::zero,
+        parse("contactTreatment caps; capHeight 0.0002;")
+    );
+    const List<rbd::triMesh> c = out.pelletSurfaces(caps, none, n);
+    EXPECT_EQ(n, 1);
+    EXPECT_LE(reach(c[0]), R - 0.5*hc);
+    EXPECT_GT(reach(c[0]), R - 2*hc);
+    EXPECT_EQ(rbd::checkClosedSolid(c[0]), "");
+    Foam::rmDir(dir);
+}
+
+
+// ************************************************************************* //
