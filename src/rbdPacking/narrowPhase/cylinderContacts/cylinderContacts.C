@@ -166,7 +166,7 @@ void Foam::rbd::cylinderContacts::cylinderTube
                       : constant::mathematical::twoPi*k/nSample;
                     const point p
                     (
-                        c + a*(bi.R() & vector(Foam::cos(t), Foam::sin(t), 0))
+                        c + a*(R & vector(Foam::cos(t), Foam::sin(t), 0))
                     );
                     if (p.z() < band)
                     {
