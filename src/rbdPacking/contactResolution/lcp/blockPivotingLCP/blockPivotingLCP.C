@@ -303,11 +303,8 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     const Eigen::VectorXd minusB(-b);
 
     std::vector<label> pos(n), members, infeasible;
-    std::vector<Eigen::Triplet<double>> triplets;
-    Eigen::SimplicialLDLT
-    <
-        sparseMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>
-    > ldlt;
+    activeSetSystem system;
+    preorderedLDLT ldlt;
     Eigen::VectorXd z(n), w(n);
 
     // Judice-Pires: block exchanges while the number of infeasible
@@ -339,7 +336,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         (
             !solveActiveSet
             (
-                A, body.get(), members, pos, eps, minusB, ldlt, triplets, z
+                A, body.get(), members, pos, eps, minusB, ldlt, system, z
             )
         )
         {

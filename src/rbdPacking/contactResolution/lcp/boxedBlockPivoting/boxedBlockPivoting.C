@@ -531,7 +531,7 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
         sparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>
     > ldlt;
     std::vector<label> pos(n), members, infeasible;
-    std::vector<Eigen::Triplet<double>> triplets;
+    activeSetSystem system;
     Eigen::VectorXd w(n), best(x);
     label fewestSoFar = n + 1;
 
@@ -569,7 +569,7 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
         (
             !solveActiveSet
             (
-                A, body, members, pos, eps, rFull, ldlt, triplets, z
+                A, body, members, pos, eps, rFull, ldlt, system, z
             )
         )
         {

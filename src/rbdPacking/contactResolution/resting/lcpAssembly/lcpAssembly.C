@@ -14,7 +14,7 @@ Foam::rbd::lcpAssembly::lcpAssembly(const scalar compliance)
     rowsK_(),
     bodyRows_(),
     bodyColumn_(),
-    triplets_(),
+    slot_(),
     gTriplets_()
 {}
 
@@ -88,28 +88,89 @@ void Foam::rbd::lcpAssembly::assemble
         addRow(c.i, a, false);
         addRow(c.k, a, true);
     }
-    triplets_.clear();
-    for (const label body : touched)
+    // A column by column, into compressed storage: column b holds, for
+    // each moving body of row b, the rows a on that body. An entry has
+    // one term per body the two rows share, at most two, so its value does
+    // not depend on the order of the terms (a + b = b + a in floating
+    // point): the same A as the triplets and setFromTriplets this replaced
+    // (its sort through a row-major copy was 8 % of a 500-sphere packing)
+    A.resize(n, n);
+    A.resizeNonZeros(0);
+    slot_.assign(n, -1);
     {
-        const auto& list = bodyRows_[body];
-        for (const auto& ra : list)
+        // Entries: at most the rows on the bodies of each row
+        label nnz = 0;
+        for (label b = 0; b < n; ++b)
         {
-            const row& Ra = ra.second ? rowsK_[ra.first] : rowsI_[ra.first];
-            for (const auto& rb : list)
+            const contact& c = contacts[dirs[b].first];
+            for (const label body : {c.i, c.k})
             {
-                const row& Rb =
-                    rb.second ? rowsK_[rb.first] : rowsI_[rb.first];
-                triplets_.emplace_back
-                (
-                    ra.first, rb.first,
-                    (Ra.lin & Rb.wLin) + (Ra.ang & Rb.wAng)
-                );
+                if (body >= 0 && !fixed[body])
+                {
+                    nnz += bodyRows_[body].size();
+                }
             }
         }
+        A.resizeNonZeros(nnz);
+    }
+    int* outer = A.outerIndexPtr();
+    int* inner = A.innerIndexPtr();
+    double* value = A.valuePtr();
+    int e = 0;
+    for (label b = 0; b < n; ++b)
+    {
+        outer[b] = e;
+        const contact& c = contacts[dirs[b].first];
+        for (const bool kSide : {false, true})
+        {
+            const label body = kSide ? c.k : c.i;
+            if (body < 0 || fixed[body])
+            {
+                continue;
+            }
+            const row& Rb = kSide ? rowsK_[b] : rowsI_[b];
+            for (const auto& ra : bodyRows_[body])
+            {
+                const row& Ra = ra.second ? rowsK_[ra.first] : rowsI_[ra.first];
+                const scalar v = (Ra.lin & Rb.wLin) + (Ra.ang & Rb.wAng);
+                const label a = ra.first;
+                if (slot_[a] < 0)
+                {
+                    slot_[a] = e;
+                    inner[e] = a;
+                    value[e++] = v;
+                }
+                else
+                {
+                    value[slot_[a]] += v;
+                }
+            }
+        }
+        // Rows ascending, as Eigen keeps them; the slots free again
+        for (int m = outer[b] + 1; m < e; ++m)
+        {
+            const int r = inner[m];
+            const double v = value[m];
+            int k = m;
+            for (; k > outer[b] && inner[k - 1] > r; --k)
+            {
+                inner[k] = inner[k - 1];
+                value[k] = value[k - 1];
+            }
+            inner[k] = r;
+            value[k] = v;
+        }
+        for (int m = outer[b]; m < e; ++m)
+        {
+            slot_[inner[m]] = -1;
+        }
+    }
+    outer[n] = e;
+    A.resizeNonZeros(e);
+    for (const label body : touched)
+    {
         bodyRows_[body].clear();
     }
-    A.resize(n, n);
-    A.setFromTriplets(triplets_.begin(), triplets_.end());
 
     // The compliance of the mesh contacts (see the header): one
     // solution where redundant contact points make A singular
