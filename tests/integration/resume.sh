@@ -85,7 +85,9 @@ do
     foamDictionary "$d" -entry pellets/number -set 8 >/dev/null
     foamDictionary "$d" -entry simulation/endTime -set 8 >/dev/null
 done
-resumeCase cylinders 1.2
+# Stopped while they settle (all released by 0.5 s; settled at 1.175 s
+# when this was written, 2026-11-26)
+resumeCase cylinders 0.6
 
 # Checkpoints by the wall clock while the run goes on
 cp -r "$here/cases/smallSpheres" "$tmp/often"

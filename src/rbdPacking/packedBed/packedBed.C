@@ -1427,7 +1427,8 @@ void Foam::rbd::packedBed::run()
         << s.largestIsland << " contacts, "
         << s.lcpFailures << " not converged), " << s.projections
         << " overlap corrections, " << w.broadPhaseBuilds()
-        << " neighbour-list builds" << nl
+        << " neighbour-list updates (" << w.broadPhaseRelisted()
+        << " pellets re-listed)" << nl
         << "Wall time " << wallTime_ << " s (CPU " << cpuTime_ << " s)"
         << nl << endl;
 }

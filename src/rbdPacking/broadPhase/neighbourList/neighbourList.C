@@ -5,6 +5,7 @@
 #include "neighbourList.H"
 #include "stateIO.H"
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -31,44 +32,182 @@ namespace
 Foam::rbd::neighbourList::neighbourList(const scalar skin)
 :
     skin_(skin),
-    pairs_(),
     x0_(),
     cutoff0_(-1),
     maxMoved_(0),
+    slack_(),
     nBuilds_(0),
+    nRelisted_(0),
     adjacency_(),
-    adjacencyBuild_(-1)
+    cells_(),
+    pairs_(),
+    pairsBuild_(-1)
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+std::int64_t Foam::rbd::neighbourList::cellKeyOf(const point& p) const
+{
+    const scalar cell = cutoff0_ + skin_;
+    return cellKey
+    (
+        std::int64_t(std::floor(p.x()/cell)),
+        std::int64_t(std::floor(p.y()/cell)),
+        std::int64_t(std::floor(p.z()/cell))
+    );
+}
+
+
+void Foam::rbd::neighbourList::link(const label i, const label k)
+{
+    DynamicList<label>& nbr = adjacency_[i];
+    label at = nbr.size();
+    while (at > 0 && nbr[at - 1] > k)
+    {
+        --at;
+    }
+    if (at > 0 && nbr[at - 1] == k)
+    {
+        return;
+    }
+    nbr.append(k);
+    for (label m = nbr.size() - 1; m > at; --m)
+    {
+        nbr[m] = nbr[m - 1];
+    }
+    nbr[at] = k;
+}
+
+
+void Foam::rbd::neighbourList::unlink(const label i, const label k)
+{
+    DynamicList<label>& nbr = adjacency_[i];
+    label m = 0;
+    while (m < nbr.size() && nbr[m] != k)
+    {
+        ++m;
+    }
+    for (; m + 1 < nbr.size(); ++m)
+    {
+        nbr[m] = nbr[m + 1];
+    }
+    if (m < nbr.size())
+    {
+        nbr.remove();
+    }
+}
+
+
+void Foam::rbd::neighbourList::rebuild
+(
+    const UList<point>& x,
+    const scalar cutoff
+)
+{
+    x0_ = x;
+    cutoff0_ = cutoff;
+    cells_.clear();
+    forAll(x0_, b)
+    {
+        cells_[cellKeyOf(x0_[b])].push_back(b);
+    }
+    // The pairs by the dense grid, then each body's neighbours in order
+    DynamicList<labelPair> found;
+    gridPairs(x0_, cutoff + skin_, found);
+    adjacency_.setSize(x0_.size());
+    for (DynamicList<label>& nbr : adjacency_)
+    {
+        nbr.clear();
+    }
+    for (const labelPair& pr : found)
+    {
+        adjacency_[pr.first()].append(pr.second());
+        adjacency_[pr.second()].append(pr.first());
+    }
+    for (DynamicList<label>& nbr : adjacency_)
+    {
+        std::sort(nbr.begin(), nbr.end());
+    }
+    nRelisted_ += x0_.size();
+}
+
+
+void Foam::rbd::neighbourList::relist
+(
+    const label i,
+    const point& xi,
+    const bool inGrid
+)
+{
+    if (inGrid)
+    {
+        std::vector<label>& old = cells_[cellKeyOf(x0_[i])];
+        old.erase(std::find(old.begin(), old.end(), i));
+        for (const label k : adjacency_[i])
+        {
+            unlink(k, i);
+        }
+        adjacency_[i].clear();
+    }
+    x0_[i] = xi;
+    const scalar cell = cutoff0_ + skin_;
+    const scalar reach2 = sqr(cell);
+    const std::int64_t c[3] =
+    {
+        std::int64_t(std::floor(xi.x()/cell)),
+        std::int64_t(std::floor(xi.y()/cell)),
+        std::int64_t(std::floor(xi.z()/cell))
+    };
+    for (int di = -1; di <= 1; ++di)
+    {
+        for (int dj = -1; dj <= 1; ++dj)
+        {
+            for (int dk = -1; dk <= 1; ++dk)
+            {
+                const auto it =
+                    cells_.find(cellKey(c[0] + di, c[1] + dj, c[2] + dk));
+                if (it == cells_.end())
+                {
+                    continue;
+                }
+                for (const label o : it->second)
+                {
+                    if (magSqr(x0_[o] - xi) < reach2)
+                    {
+                        link(i, o);
+                        link(o, i);
+                    }
+                }
+            }
+        }
+    }
+    cells_[cellKey(c[0], c[1], c[2])].push_back(i);
+    ++nRelisted_;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::labelListList& Foam::rbd::neighbourList::adjacency() const
+const Foam::DynamicList<Foam::labelPair>&
+Foam::rbd::neighbourList::pairs() const
 {
-    if (adjacencyBuild_ != nBuilds_)
+    if (pairsBuild_ != nBuilds_)
     {
-        labelList nNbr(x0_.size(), 0);
-        for (const labelPair& pr : pairs_)
-        {
-            ++nNbr[pr.first()];
-            ++nNbr[pr.second()];
-        }
-        adjacency_.setSize(x0_.size());
+        pairs_.clear();
         forAll(adjacency_, i)
         {
-            adjacency_[i].setSize(nNbr[i]);
-            nNbr[i] = 0;
+            for (const label k : adjacency_[i])
+            {
+                if (k > i)
+                {
+                    pairs_.append(labelPair(i, k));
+                }
+            }
         }
-        for (const labelPair& pr : pairs_)
-        {
-            const label i = pr.first();
-            const label k = pr.second();
-            adjacency_[i][nNbr[i]++] = k;
-            adjacency_[k][nNbr[k]++] = i;
-        }
-        adjacencyBuild_ = nBuilds_;
+        pairsBuild_ = nBuilds_;
     }
-    return adjacency_;
+    return pairs_;
 }
 
 
@@ -78,29 +217,58 @@ bool Foam::rbd::neighbourList::update
     const scalar cutoff
 )
 {
-    bool rebuild = (x.size() != x0_.size()) || (cutoff != cutoff0_);
-
-    scalar moved2 = 0;
-    if (!rebuild)
+    const label n0 = x0_.size();
+    if (x.size() < n0 || cutoff != cutoff0_)
     {
-        forAll(x, i)
-        {
-            moved2 = max(moved2, magSqr(x[i] - x0_[i]));
-        }
-        rebuild = moved2 > sqr(0.5*skin_);
+        rebuild(x, cutoff);
+        maxMoved_ = 0;
+        slack_.setSize(x.size());
+        slack_ = 0.5*skin_;
+        ++nBuilds_;
+        return true;
     }
 
-    if (rebuild)
+    // Bodies beyond skin/2 from their snapshots, and new ones, are listed
+    // again in index order (the list does not depend on that order)
+    scalar moved2 = 0;
+    std::vector<label> relisted;
+    slack_.setSize(x.size());
+    for (label i = 0; i < n0; ++i)
     {
-        gridPairs(x, cutoff + skin_, pairs_);
-        x0_ = x;
-        cutoff0_ = cutoff;
-        moved2 = 0;
-        ++nBuilds_;
+        const scalar d2 = magSqr(x[i] - x0_[i]);
+        if (d2 > sqr(0.5*skin_))
+        {
+            relisted.push_back(i);
+            slack_[i] = 0.5*skin_;
+        }
+        else
+        {
+            moved2 = max(moved2, d2);
+            slack_[i] = 0.5*skin_ - Foam::sqrt(d2);
+        }
+    }
+    for (label i = n0; i < x.size(); ++i)
+    {
+        slack_[i] = 0.5*skin_;
     }
     maxMoved_ = Foam::sqrt(moved2);
-
-    return rebuild;
+    if (relisted.empty() && x.size() == n0)
+    {
+        return false;
+    }
+    x0_.setSize(x.size());
+    adjacency_.setSize(x.size());
+    for (const label i : relisted)
+    {
+        relist(i, x[i], true);
+    }
+    for (label i = n0; i < x.size(); ++i)
+    {
+        adjacency_[i].clear();
+        relist(i, x[i], false);
+    }
+    ++nBuilds_;
+    return true;
 }
 
 
@@ -284,19 +452,55 @@ void Foam::rbd::neighbourList::bruteForce
 
 void Foam::rbd::neighbourList::writeState(stateWriter& out) const
 {
-    out.putList(pairs_).putList(x0_);
-    out.put(cutoff0_).put(maxMoved_).put(nBuilds_);
+    out.putList(pairs()).putList(x0_);
+    out.putList(slack_);
+    out.put(cutoff0_).put(maxMoved_).put(nBuilds_).put(nRelisted_);
 }
 
 
 void Foam::rbd::neighbourList::readState(stateReader& in)
 {
-    in.getList(pairs_);
+    DynamicList<labelPair> pairs;
+    in.getList(pairs);
     List<point> x0;
     in.getList(x0);
     x0_ = x0;
-    in.get(cutoff0_).get(maxMoved_).get(nBuilds_);
-    adjacencyBuild_ = -1;
+    List<scalar> slack;
+    in.getList(slack);
+    slack_ = slack;
+    in.get(cutoff0_).get(maxMoved_).get(nBuilds_).get(nRelisted_);
+
+    // The neighbours and the grid of the snapshots, as they were
+    adjacency_.setSize(x0_.size());
+    for (DynamicList<label>& nbr : adjacency_)
+    {
+        nbr.clear();
+    }
+    for (const labelPair& pr : pairs)
+    {
+        if
+        (
+            pr.first() >= 0 && pr.second() >= 0
+         && pr.first() < x0_.size() && pr.second() < x0_.size()
+        )
+        {
+            adjacency_[pr.first()].append(pr.second());
+            adjacency_[pr.second()].append(pr.first());
+        }
+    }
+    for (DynamicList<label>& nbr : adjacency_)
+    {
+        std::sort(nbr.begin(), nbr.end());
+    }
+    cells_.clear();
+    if (cutoff0_ >= 0)
+    {
+        forAll(x0_, b)
+        {
+            cells_[cellKeyOf(x0_[b])].push_back(b);
+        }
+    }
+    pairsBuild_ = -1;
 }
 
 

@@ -74,7 +74,7 @@ Foam::scalar Foam::rbd::stepControl::choose
     const UList<label>& awake,
     const UList<labelPair>& activePairs,
     const UList<contact>& contacts,
-    const scalar unlistedClearance
+    const UList<scalar>& listSlack
 ) const
 {
     const scalar g = g_;
@@ -102,22 +102,26 @@ Foam::scalar Foam::rbd::stepControl::choose
 
     scalar h = hMax;
 
-    // 1. Pairs the broad phase has not listed are at least cutoff + the
-    //    unlisted clearance apart, i.e. their bounding spheres at least
-    //    lambda + clearance: no body may cover half of that
-    scalar sMax = 0;
+    // 1. Pairs the broad phase has not listed are at least cutoff + c_i +
+    //    c_k apart (c: each body's slack, skin/2 less its distance from
+    //    its snapshot), i.e. their bounding spheres at least lambda + c_i
+    //    + c_k: each body may cover half of lambda (less half the touching
+    //    gap) and its own slack, under gravity. The same bound as lambda +
+    //    skin - 2 max|x - X| against twice the fastest body for the body
+    //    with the least slack, and a longer one where the fast bodies are
+    //    the ones just listed again
     for (const label i : awake)
     {
-        sMax = max(sMax, surfaceSpeed(i));
-    }
-    h = min
-    (
-        h,
-        untilTouching
+        h = min
         (
-            band_ + unlistedClearance, 2*sMax, 2*g
-        )
-    );
+            h,
+            timeToCover
+            (
+                g, surfaceSpeed(i),
+                max(0.5*(band_ - 0.5*touch_) + listSlack[i], 0.0)
+            )
+        );
+    }
 
     // Eq 38 for a pair (k < 0: the container) whose bounding spheres are
     // within the band: delta_t <= 0.2 lambda/|v_ik,max|, |v_ik,max| the

@@ -170,7 +170,7 @@ bool Foam::rbd::sleepControl::wake
     const label i,
     const UList<rigidBody>& bodies,
     boolList& fixed,
-    const labelListList& adjacency
+    const UList<DynamicList<label>>& adjacency
 )
 {
     const scalar below = spheres_ ? 0 : 0.5*rb_;

@@ -6,6 +6,7 @@
 #include "stateIO.H"
 #include "sphereContacts.H"
 #include "midpointIntegrator.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -122,14 +123,30 @@ const Foam::UList<Foam::labelPair>& Foam::rbd::world::activePairs() const
     awake();
     if (activePairsBuild_ != neighbours_.nBuilds())
     {
+        // The listed pairs with a body awake, from the neighbours of the
+        // awake bodies (each pair once), in the order of pairs()
+        const neighbourList::adjacencyList& adjacency =
+            neighbours_.adjacency();
         activePairs_.clear();
-        for (const labelPair& pr : neighbours_.pairs())
+        for (const label i : awake_)
         {
-            if (!fixed_[pr.first()] || !fixed_[pr.second()])
+            if (i >= adjacency.size())
             {
-                activePairs_.append(pr);
+                continue;
+            }
+            for (const label k : adjacency[i])
+            {
+                if (k > i)
+                {
+                    activePairs_.append(labelPair(i, k));
+                }
+                else if (fixed_[k])
+                {
+                    activePairs_.append(labelPair(k, i));
+                }
             }
         }
+        std::sort(activePairs_.begin(), activePairs_.end());
         activePairsBuild_ = neighbours_.nBuilds();
     }
     return activePairs_;
@@ -412,7 +429,7 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     const scalar h = stepControl_.choose
     (
         hMax, bodies_, fixed_, awake(), activePairs(), contacts_,
-        neighbours_.unlistedClearance()
+        neighbours_.slack()
     );
     const scalar minStep = 1e-12;
     const label maxTinySteps = 1000;

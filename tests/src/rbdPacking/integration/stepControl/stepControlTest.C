@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 #include "stepControl.H"
+#include "scalarList.H"
 #include "sphereContacts.H"
 
 using namespace Foam;
@@ -74,9 +75,9 @@ TEST(stepControl, timeToLeaveCircleHitsTheCircle)
 
 TEST(stepControl, bodiesAtRestFallAtMostTheUnlistedClearance)
 {
-    // At rest far from everything: an unlisted pair may close band +
-    // clearance under gravity on both bodies (2g) in free fall, to half
-    // the touching gap; nothing else is shorter
+    // At rest far from everything: an unlisted pair may close lambda + the
+    // two bodies' slacks under gravity on both bodies (2g) in free fall,
+    // to half the touching gap; nothing else is shorter
     List<rigidBody> bs(2);
     bs[0] = sphereAt(point(0.01, 0, 0.05), Zero);
     bs[1] = sphereAt(point(0.04, 0, 0.05), Zero);
@@ -88,7 +89,8 @@ TEST(stepControl, bodiesAtRestFallAtMostTheUnlistedClearance)
     const scalar clearance = 0.5*r;
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, pairs, contacts, clearance
+        hMax, bs, fixed, awake, pairs, contacts,
+        scalarList(2, 0.5*clearance)
     );
     EXPECT_DOUBLE_EQ
     (
@@ -99,9 +101,45 @@ TEST(stepControl, bodiesAtRestFallAtMostTheUnlistedClearance)
     // With a clearance that takes longer than the outer interval to fall
     EXPECT_EQ
     (
-        control(true).choose(hMax, bs, fixed, awake, pairs, contacts, 1),
+        control(true).choose
+        (
+            hMax, bs, fixed, awake, pairs, contacts, scalarList(2, 0.5)
+        ),
         hMax
     );
+}
+
+
+TEST(stepControl, eachBodyCoversItsOwnSlack)
+{
+    // A pellet falling at 2 m/s with its whole slack (just listed again)
+    // beside one at rest with none left: the fast one may cover half of
+    // lambda (less half the touching gap) and its own slack; the one at
+    // rest limits nothing. The bound of one clearance for the bed (skin
+    // - 2 max|x - X| = 0 against twice the fastest) would be far shorter
+    const scalar skinHalf = 0.25*r;
+    List<rigidBody> bs(2);
+    bs[0] = sphereAt(point(0.01, 0, 0.05), vector(0, 0, -2));
+    bs[1] = sphereAt(point(0.04, 0, 0.05), Zero);
+    const boolList fixed(2, false);
+    const labelList awake({0, 1});
+    const List<labelPair> pairs;
+    const List<contact> contacts;
+    scalarList slack(2);
+    slack[0] = skinHalf;
+    slack[1] = 0;
+
+    const scalar h = control(true).choose
+    (
+        hMax, bs, fixed, awake, pairs, contacts, slack
+    );
+    const scalar cover = 0.5*(band - 0.5*touch) + skinHalf;
+    EXPECT_DOUBLE_EQ(h, stepControl::timeToCover(g, 2, cover));
+    // 2 m/s over that distance, gravity helping: a little less than
+    // cover/2
+    EXPECT_LT(h, cover/2);
+    EXPECT_GT(h, 0.9*cover/2);
+    EXPECT_GT(h, stepControl::timeToCover(2*g, 4, band - 0.5*touch));
 }
 
 
@@ -125,7 +163,7 @@ TEST(stepControl, approachingListedPairStopsShortOfTouching)
     {
         const scalar h = control(centreGaps).choose
         (
-            hMax, bs, fixed, awake, pairs, contacts, 10*r
+            hMax, bs, fixed, awake, pairs, contacts, scalarList(bs.size(), 5*r)
         );
         const scalar gapAfter = gap0 - u*h;
         EXPECT_GT(gapAfter, 0) << "centreGaps " << centreGaps;
@@ -159,7 +197,7 @@ TEST(stepControl, eq38BoundsAContactWithinTheBand)
     {
         const scalar h = control(centreGaps).choose
         (
-            hMax, bs, fixed, awake, pairs, contacts, 10*r
+            hMax, bs, fixed, awake, pairs, contacts, scalarList(bs.size(), 5*r)
         );
         EXPECT_LE(h, 0.2*band/vRel*(1 + 1e-12))
             << "centreGaps " << centreGaps;
@@ -185,7 +223,7 @@ TEST(stepControl, sphereSkimmingTheWallStaysInside)
 
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, pairs, contacts, 10*r
+        hMax, bs, fixed, awake, pairs, contacts, scalarList(bs.size(), 5*r)
     );
     const point xEnd = x + v*h;
     const scalar rhoEnd = Foam::sqrt(sqr(xEnd.x()) + sqr(xEnd.y()));

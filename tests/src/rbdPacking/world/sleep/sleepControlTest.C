@@ -158,7 +158,7 @@ TEST(sleepControl, wakeSpreadsUpwardsOnly)
     // (within reach, centres higher), not the one below
     column c(4);
     c.fixed = true;
-    labelListList adjacency(4);
+    List<DynamicList<label>> adjacency(4);
     adjacency[0] = labelList({1});
     adjacency[1] = labelList({0, 2});
     adjacency[2] = labelList({1, 3});
@@ -181,7 +181,7 @@ TEST(sleepControl, wokenPelletRestartsItsWindow)
     boolList sleeps;
     ASSERT_NEAR(c.untilAsleep(sleeps), tSleep, 0.5*h);
     c.fixed[0] = true;
-    const labelListList adjacency(1);
+    const List<DynamicList<label>> adjacency(1);
     EXPECT_TRUE(c.sleep.wake(0, c.bodies, c.fixed, adjacency));
     EXPECT_FALSE(c.fixed[0]);
     EXPECT_NEAR(c.untilAsleep(sleeps), tSleep, 0.5*h);
