@@ -266,20 +266,33 @@ Foam::rbd::restingContactSolver::solve
         return ddGap + 2*(max(c.gap, scalar(0)) + h*vn)/sqr(h);
     };
 
-    // The normal forces of an island's contacts for the forces Fb, tb
-    auto solveIsland =
-    [&](const std::vector<label>& cs, const UList<vector>& Fb,
-        const UList<vector>& tb, Eigen::VectorXd& phi)
+    // The normal forces of island s's contacts for the forces Fb, tb; its
+    // matrix assembled anew, or (assembled) as the first pass left it
+    if (label(islandSystems_.size()) < islands_.size())
     {
+        islandSystems_.resize(islands_.size());
+    }
+    auto solveIsland =
+    [&](const label s, const UList<vector>& Fb, const UList<vector>& tb,
+        Eigen::VectorXd& phi, const bool assembled)
+    {
+        const std::vector<label>& cs = islands_.contacts(s);
         const label n = cs.size();
-        std::vector<std::pair<label, vector>> dirs(n);
-        for (label a = 0; a < n; ++a)
+        islandSystem& sys = islandSystems_[s];
+        if (!assembled)
         {
-            dirs[a] = {cs[a], contacts[cs[a]].n};
+            std::vector<std::pair<label, vector>> dirs(n);
+            for (label a = 0; a < n; ++a)
+            {
+                dirs[a] = {cs[a], contacts[cs[a]].n};
+            }
+            assembly_.assemble
+            (
+                bodies, contacts, fixed, dirs, sys.A, sys.shift, sys.factors
+            );
         }
-        Eigen::SparseMatrix<double> A;
-        Eigen::VectorXd shift;
-        assemble(dirs, A, shift);
+        const Eigen::SparseMatrix<double>& A = sys.A;
+        const Eigen::VectorXd& shift = sys.shift;
 
         Eigen::VectorXd B(n);
         for (label a = 0; a < n; ++a)
@@ -298,7 +311,7 @@ Foam::rbd::restingContactSolver::solve
         }
 
         phi.resize(n);
-        const lcpResult lr = solver_->solve(A, factors, B, guess, phi);
+        const lcpResult lr = solver_->solve(A, sys.factors, B, guess, phi);
         res.iterations += lr.iterations;
         res.converged = res.converged && lr.converged;
         res.maxViolation = max(res.maxViolation, lr.maxViolation);
@@ -559,7 +572,7 @@ Foam::rbd::restingContactSolver::solve
     {
         Eigen::VectorXd phi;
         const std::vector<label>& island = islands_.contacts(s);
-        solveIsland(island, Fext, tauExt, phi);
+        solveIsland(s, Fext, tauExt, phi, false);
         for (size_t a = 0; a < island.size(); ++a)
         {
             phiAll[island[a]] = phi(a);
@@ -697,7 +710,7 @@ Foam::rbd::restingContactSolver::solve
             {
                 Eigen::VectorXd phi;
                 const std::vector<label>& island = islands_.contacts(s);
-                solveIsland(island, Fb, tb, phi);
+                solveIsland(s, Fb, tb, phi, true);
                 for (size_t a = 0; a < island.size(); ++a)
                 {
                     phiAll[island[a]] = phi(a);
