@@ -208,7 +208,7 @@ Foam::rbd::restingContactSolver::solve
     List<vector> friction(contacts.size(), Zero);
 
     // Warm start: pairs active in the previous step (then in pass 1)
-    std::unordered_map<std::uint64_t, bool>& active = active_;
+    warmStart& active = active_;
 
     const restingProblem problem{bodies, contacts, fixed, h};
 
@@ -241,12 +241,7 @@ Foam::rbd::restingContactSolver::solve
 
     auto recordActive = [&]()
     {
-        active.clear();
-        forAll(contacts, ci)
-        {
-            bool& a = active[pairKey(contacts[ci])];
-            a = a || phiAll[ci] > 0;
-        }
+        active.record(contacts, phiAll);
     };
     recordActive();
 
@@ -289,11 +284,7 @@ Foam::rbd::restingContactSolver::solve
 void Foam::rbd::restingContactSolver::writeState(stateWriter& out) const
 {
     // In key order: the same state gives the same file
-    std::vector<std::pair<std::uint64_t, bool>> pairs
-    (
-        active_.begin(), active_.end()
-    );
-    std::sort(pairs.begin(), pairs.end());
+    const warmStart::entryList& pairs = active_.entries();
     out.put(label(pairs.size()));
     for (const auto& p : pairs)
     {
@@ -307,14 +298,13 @@ void Foam::rbd::restingContactSolver::readState(stateReader& in)
     label n = 0;
     in.get(n);
     in.checkSize(n);
-    active_.clear();
-    for (label a = 0; a < n; ++a)
+    warmStart::entryList pairs(n);
+    for (auto& p : pairs)
     {
-        std::uint64_t key = 0;
-        bool on = false;
-        in.get(key).get(on);
-        active_[key] = on;
+        in.get(p.first).get(p.second);
     }
+    std::sort(pairs.begin(), pairs.end());
+    active_.set(pairs);
 }
 
 

@@ -303,8 +303,8 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     const Eigen::VectorXd minusB(-b);
 
     std::vector<label> pos(n), members, infeasible;
-    activeSetSystem system;
-    preorderedLDLT ldlt;
+    activeSetSystem& system = system_;
+    preorderedLDLT& ldlt = ldlt_;
     Eigen::VectorXd z(n), w(n);
 
     // Judice-Pires: block exchanges while the number of infeasible

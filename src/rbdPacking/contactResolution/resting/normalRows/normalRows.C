@@ -96,7 +96,7 @@ void Foam::rbd::normalRows::solve
     const bool assembled,
     lcpAssembly& assembly,
     const lcpSolver& solver,
-    const std::unordered_map<std::uint64_t, bool>& active,
+    const warmStart& active,
     restingSolveResult& res,
     Eigen::VectorXd& phi
 )
@@ -132,8 +132,7 @@ void Foam::rbd::normalRows::solve
     guess.assign(n, false);
     for (label a = 0; a < n; ++a)
     {
-        const auto it = active.find(pairKey(contacts[cs[a]]));
-        guess[a] = it != active.end() ? it->second : B(a) < 0;
+        guess[a] = active.guess(contacts[cs[a]], B(a) < 0);
     }
 
     phi.resize(n);
