@@ -92,6 +92,22 @@ Foam::rbd::triMesh Foam::rbd::contactGeometry::cap
 )
 {
     const vector u(normalised(m));
+
+    // Nothing to cut where the pellet keeps to the plane already, within
+    // capSkip capHeight: the second cap of a face lying on a face (the
+    // contact points of a patch, beyond the spacing of touching(), share
+    // one plane) would cut along the first cap's face, a plane CGAL's
+    // corefinement failed on (an assertion, on a bed of six cylinders)
+    scalar reach = -GREAT;
+    for (const point& x : pellet.points())
+    {
+        reach = max(reach, capHeight - ((x - p) & u));
+    }
+    if (reach <= capSkip*capHeight)
+    {
+        return pellet;
+    }
+
     // clipByPlane keeps (x - q) . (-u) <= 0, i.e. (x - p) . u >= capHeight
     return cgalMeshTools::clipByPlane(pellet, p + capHeight*u, -u);
 }

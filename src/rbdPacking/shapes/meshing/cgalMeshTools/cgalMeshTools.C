@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "cgalMeshTools.H"
+#include "boundBox.H"
 #include "OSspecific.H"
 #include "sigFpe.H"
 #include "OStringStream.H"
@@ -455,12 +456,44 @@ Foam::rbd::triMesh Foam::rbd::cgalMeshTools::clipByPlane
     const vector& n
 )
 {
-    surfaceMesh sm = toSurfaceMesh(mesh);
-    const kernel::Plane_3 plane(n.x(), n.y(), n.z(), -(n & p));
-    PMP::clip(sm, plane, CGAL::parameters::clip_volume(true));
-    PMP::triangulate_faces(sm);
-    sm.collect_garbage();
-    return fromSurfaceMesh(sm);
+    // A plane that holds a face of the mesh (a cap's cut face beside
+    // another cap of the same pellet) can trip CGAL's corefinement of
+    // coplanar faces: an assertion (parallel lines intersected, with
+    // inexact constructions) on a bed of six cylinders. The plane is then
+    // moved off the face along n by clipShift times the mesh's size (1 nm
+    // for a 10 mm pellet), and once more by twice that, before giving up
+    // with a FatalError that names the cut.
+    const boundBox bb(mesh.points());
+    const scalar size = bb.mag();
+    for (label attempt = 0; attempt < 3; ++attempt)
+    {
+        const scalar shift = attempt*clipShift*size;
+        const point q(p + shift*n/max(mag(n), VSMALL));
+        try
+        {
+            surfaceMesh sm = toSurfaceMesh(mesh);
+            const kernel::Plane_3 plane(n.x(), n.y(), n.z(), -(n & q));
+            PMP::clip(sm, plane, CGAL::parameters::clip_volume(true));
+            PMP::triangulate_faces(sm);
+            sm.collect_garbage();
+            return fromSurfaceMesh(sm);
+        }
+        catch (const CGAL::Failure_exception& e)
+        {
+            if (attempt == 2)
+            {
+                FatalErrorInFunction
+                    << "CGAL could not cut a pellet's surface (" << size
+                    << " m across) by the plane through " << p
+                    << " with normal " << n << ", nor by the planes moved "
+                    << clipShift*size << " and " << 2*clipShift*size
+                    << " m along it: " << e.what() << nl
+                    << "    Set contactTreatment none, or report the case."
+                    << exit(FatalError);
+            }
+        }
+    }
+    return triMesh();
 }
 
 

@@ -115,6 +115,40 @@ TEST(contactGeometry, capsRemoveTheCapVolume)
 }
 
 
+TEST(contactGeometry, aSecondCapOnTheSamePlaneLeavesThePellet)
+{
+    // A face lying on a face touches at several points of one plane: the
+    // second cap, at a point of the first cap's face and tilted by 1e-4
+    // rad, has nothing to cut (within capSkip capHeight) and returns the
+    // pellet as the first cap left it, instead of handing CGAL a plane
+    // along a face (its corefinement asserted on such a bed)
+    const scalar a = 0.004, hc = 3e-4;
+    rbd::triMesh cube(rbdTest::box(2*a, 2*a, 2*a));
+    cube.transform(tensor::I, vector(-a, -a, -a));
+    const rbd::triMesh once = rbd::contactGeometry::cap
+    (
+        cube, point(0, 0, -a), vector(0, 0, 1), hc
+    );
+    const rbd::triMesh twice = rbd::contactGeometry::cap
+    (
+        once, point(0.5*a, 0.5*a, -a), vector(1e-4, 0, 1), hc
+    );
+    EXPECT_EQ(rbd::checkClosedSolid(twice), "");
+    EXPECT_EQ(twice.points().size(), once.points().size());
+    EXPECT_EQ(twice.volume(), once.volume());
+
+    // A plane that does cut is not skipped
+    const rbd::triMesh deeper = rbd::contactGeometry::cap
+    (
+        once, point(0, 0, -a + hc), vector(0, 0, 1), hc
+    );
+    EXPECT_NEAR
+    (
+        once.volume() - deeper.volume(), 4*a*a*hc, 1e-12*cube.volume()
+    );
+}
+
+
 TEST(contactGeometry, touchingFiltersGapBottomAndDuplicates)
 {
     List<rbd::contact> all
