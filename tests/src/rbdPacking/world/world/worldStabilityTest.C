@@ -420,10 +420,11 @@ TEST(stability, fastDropFromHighUp)
     // pellet), for every seed.
     //
     // The heaps they end in, three layers in a tube of 3 d, do not all
-    // come to rest: a wedged sphere creeps at about 1 mm/s, often with
-    // its neighbours pushed back out of overlap nearly every step (up to
-    // 80 000 overlap corrections), for seconds or for ever (a known
-    // defect: docs/history.md, Known limitations). Measured over
+    // come to rest: a sphere on the floor spinning about the vertical
+    // (no spin resistance at a point contact), or one or two spheres
+    // bouncing on top of the heap for seconds with an overlap correction
+    // nearly every step (up to 80 000 in a run) (a known defect:
+    // docs/history.md, Known limitations). Measured over
     // seeds 1-16, not settled by 10 s: 1 (the build before the per-body
     // broad phase), 4 (this build), 5 (this build with the broad phase's
     // bound taken from the least slack of any body, i.e. shorter steps):
