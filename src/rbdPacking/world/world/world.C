@@ -27,7 +27,10 @@ Foam::rbd::world::world
     rb_(shape.boundingRadius()),
     band_(controls.proximity*shape.boundingRadius()),
     touch_(controls.contactTolerance*shape.diameter()),
-    slop_(controls.contactTolerance*shape.diameter()),
+    projection_
+    (
+        controls.contactTolerance*shape.diameter(), shape.boundingRadius()
+    ),
     dispatch_
     (
         shape, container, material.restitution, material.friction, band_,
@@ -267,51 +270,9 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
 
 void Foam::rbd::world::projectOverlaps()
 {
-    // Gauss-Seidel sweeps until no interpenetration exceeds the slop; each
-    // correction leaves half the slop, so that a jammed set of contacts
-    // (a column wedged between neighbours and the wall) settles at
-    // corrections below the slop instead of pushing back and forth
-    const label maxSweeps = 50;
-    for (label sweep = 0; sweep < maxSweeps; ++sweep)
-    {
-        bool moved = false;
-        for (contact& c : contacts_)
-        {
-            c.gap =
-                c.centreBased
-              ? sphereContacts::gap(c, bodies_, rb_, tube_)
-              : meshContacts::gap(c, bodies_, tube_);
-            if (c.gap >= -slop_)
-            {
-                continue;
-            }
-            const scalar wi = fixed_[c.i] ? 0 : bodies_[c.i].invMass();
-            const scalar wk =
-                (c.k >= 0 && !fixed_[c.k]) ? bodies_[c.k].invMass() : 0;
-            if (wi + wk <= 0)
-            {
-                continue;
-            }
-            const scalar depth = -c.gap - 0.5*slop_;
-            const vector dx((depth/(wi + wk))*c.n);
-            bodies_[c.i].displace(wi*dx);
-            if (wk > 0)
-            {
-                bodies_[c.k].displace(-wk*dx);
-            }
-            c.gap = -0.5*slop_;
-            moved = true;
-            ++stats_.projections;
-        }
-        if (!moved)
-        {
-            break;
-        }
-    }
+    stats_.projections +=
+        projection_.correct(bodies_, fixed_, tube_, contacts_);
 }
-
-
-
 
 
 void Foam::rbd::world::updateSleep(const scalar h)
