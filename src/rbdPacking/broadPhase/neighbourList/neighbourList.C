@@ -34,7 +34,6 @@ Foam::rbd::neighbourList::neighbourList(const scalar skin)
     skin_(skin),
     x0_(),
     cutoff0_(-1),
-    maxMoved_(0),
     slack_(),
     nBuilds_(0),
     nRelisted_(0),
@@ -47,15 +46,43 @@ Foam::rbd::neighbourList::neighbourList(const scalar skin)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-std::int64_t Foam::rbd::neighbourList::cellKeyOf(const point& p) const
+void Foam::rbd::neighbourList::cellOf(const point& p, std::int64_t c[3]) const
 {
     const scalar cell = cutoff0_ + skin_;
-    return cellKey
-    (
-        std::int64_t(std::floor(p.x()/cell)),
-        std::int64_t(std::floor(p.y()/cell)),
-        std::int64_t(std::floor(p.z()/cell))
-    );
+    c[0] = std::int64_t(std::floor(p.x()/cell));
+    c[1] = std::int64_t(std::floor(p.y()/cell));
+    c[2] = std::int64_t(std::floor(p.z()/cell));
+}
+
+
+void Foam::rbd::neighbourList::setCells()
+{
+    cells_.clear();
+    forAll(x0_, b)
+    {
+        std::int64_t c[3];
+        cellOf(x0_[b], c);
+        cells_[cellKey(c[0], c[1], c[2])].push_back(b);
+    }
+}
+
+
+void Foam::rbd::neighbourList::setAdjacency(const UList<labelPair>& pairs)
+{
+    adjacency_.setSize(x0_.size());
+    for (DynamicList<label>& nbr : adjacency_)
+    {
+        nbr.clear();
+    }
+    for (const labelPair& pr : pairs)
+    {
+        adjacency_[pr.first()].append(pr.second());
+        adjacency_[pr.second()].append(pr.first());
+    }
+    for (DynamicList<label>& nbr : adjacency_)
+    {
+        std::sort(nbr.begin(), nbr.end());
+    }
 }
 
 
@@ -107,28 +134,11 @@ void Foam::rbd::neighbourList::rebuild
 {
     x0_ = x;
     cutoff0_ = cutoff;
-    cells_.clear();
-    forAll(x0_, b)
-    {
-        cells_[cellKeyOf(x0_[b])].push_back(b);
-    }
+    setCells();
     // The pairs by the dense grid, then each body's neighbours in order
     DynamicList<labelPair> found;
     gridPairs(x0_, cutoff + skin_, found);
-    adjacency_.setSize(x0_.size());
-    for (DynamicList<label>& nbr : adjacency_)
-    {
-        nbr.clear();
-    }
-    for (const labelPair& pr : found)
-    {
-        adjacency_[pr.first()].append(pr.second());
-        adjacency_[pr.second()].append(pr.first());
-    }
-    for (DynamicList<label>& nbr : adjacency_)
-    {
-        std::sort(nbr.begin(), nbr.end());
-    }
+    setAdjacency(found);
     nRelisted_ += x0_.size();
 }
 
@@ -140,9 +150,11 @@ void Foam::rbd::neighbourList::relist
     const bool inGrid
 )
 {
+    std::int64_t c[3];
     if (inGrid)
     {
-        std::vector<label>& old = cells_[cellKeyOf(x0_[i])];
+        cellOf(x0_[i], c);
+        std::vector<label>& old = cells_[cellKey(c[0], c[1], c[2])];
         old.erase(std::find(old.begin(), old.end(), i));
         for (const label k : adjacency_[i])
         {
@@ -151,14 +163,8 @@ void Foam::rbd::neighbourList::relist
         adjacency_[i].clear();
     }
     x0_[i] = xi;
-    const scalar cell = cutoff0_ + skin_;
-    const scalar reach2 = sqr(cell);
-    const std::int64_t c[3] =
-    {
-        std::int64_t(std::floor(xi.x()/cell)),
-        std::int64_t(std::floor(xi.y()/cell)),
-        std::int64_t(std::floor(xi.z()/cell))
-    };
+    const scalar reach2 = sqr(cutoff0_ + skin_);
+    cellOf(xi, c);
     for (int di = -1; di <= 1; ++di)
     {
         for (int dj = -1; dj <= 1; ++dj)
@@ -221,7 +227,6 @@ bool Foam::rbd::neighbourList::update
     if (x.size() < n0 || cutoff != cutoff0_)
     {
         rebuild(x, cutoff);
-        maxMoved_ = 0;
         slack_.setSize(x.size());
         slack_ = 0.5*skin_;
         ++nBuilds_;
@@ -230,7 +235,6 @@ bool Foam::rbd::neighbourList::update
 
     // Bodies beyond skin/2 from their snapshots, and new ones, are listed
     // again in index order (the list does not depend on that order)
-    scalar moved2 = 0;
     std::vector<label> relisted;
     slack_.setSize(x.size());
     for (label i = 0; i < n0; ++i)
@@ -243,7 +247,6 @@ bool Foam::rbd::neighbourList::update
         }
         else
         {
-            moved2 = max(moved2, d2);
             slack_[i] = 0.5*skin_ - Foam::sqrt(d2);
         }
     }
@@ -251,7 +254,6 @@ bool Foam::rbd::neighbourList::update
     {
         slack_[i] = 0.5*skin_;
     }
-    maxMoved_ = Foam::sqrt(moved2);
     if (relisted.empty() && x.size() == n0)
     {
         return false;
@@ -454,7 +456,7 @@ void Foam::rbd::neighbourList::writeState(stateWriter& out) const
 {
     out.putList(pairs()).putList(x0_);
     out.putList(slack_);
-    out.put(cutoff0_).put(maxMoved_).put(nBuilds_).put(nRelisted_);
+    out.put(cutoff0_).put(nBuilds_).put(nRelisted_);
 }
 
 
@@ -468,37 +470,32 @@ void Foam::rbd::neighbourList::readState(stateReader& in)
     List<scalar> slack;
     in.getList(slack);
     slack_ = slack;
-    in.get(cutoff0_).get(maxMoved_).get(nBuilds_).get(nRelisted_);
+    in.get(cutoff0_).get(nBuilds_).get(nRelisted_);
 
     // The neighbours and the grid of the snapshots, as they were
-    adjacency_.setSize(x0_.size());
-    for (DynamicList<label>& nbr : adjacency_)
-    {
-        nbr.clear();
-    }
     for (const labelPair& pr : pairs)
     {
         if
         (
-            pr.first() >= 0 && pr.second() >= 0
-         && pr.first() < x0_.size() && pr.second() < x0_.size()
+            pr.first() < 0 || pr.first() >= pr.second()
+         || pr.second() >= x0_.size()
         )
         {
-            adjacency_[pr.first()].append(pr.second());
-            adjacency_[pr.second()].append(pr.first());
+            FatalErrorInFunction
+                << "The checkpoint " << in.name().c_str() << " lists the "
+                << "pair (" << pr.first() << ' ' << pr.second() << ") of "
+                << x0_.size() << " pellets: it is damaged." << nl
+                << "    Delete it and run without -resume." << exit(FatalError);
         }
     }
-    for (DynamicList<label>& nbr : adjacency_)
-    {
-        std::sort(nbr.begin(), nbr.end());
-    }
-    cells_.clear();
+    setAdjacency(pairs);
     if (cutoff0_ >= 0)
     {
-        forAll(x0_, b)
-        {
-            cells_[cellKeyOf(x0_[b])].push_back(b);
-        }
+        setCells();
+    }
+    else
+    {
+        cells_.clear();
     }
     pairsBuild_ = -1;
 }

@@ -49,6 +49,31 @@ void Foam::rbd::restingContactSolver::bodyBuffers::resize(const label n)
 }
 
 
+void Foam::rbd::restingContactSolver::normalPass
+(
+    const restingProblem& problem,
+    const label s,
+    const UList<vector>& Fb,
+    const UList<vector>& tb,
+    const bool assembled,
+    List<scalar>& phiAll,
+    result& res
+) const
+{
+    const std::vector<label>& island = islands_.contacts(s);
+    Eigen::VectorXd phi;
+    normalRows_.solve
+    (
+        problem, s, island, Fb, tb, assembled, assembly_, *solver_, active_,
+        res, phi
+    );
+    for (size_t a = 0; a < island.size(); ++a)
+    {
+        phiAll[island[a]] = phi(a);
+    }
+}
+
+
 void Foam::rbd::restingContactSolver::frictionStage
 (
     const restingProblem& problem,
@@ -56,7 +81,6 @@ void Foam::rbd::restingContactSolver::frictionStage
     const UList<vector>& Fext,
     const UList<vector>& tauExt,
     List<scalar>& phiAll,
-    List<vector>& friction,
     result& res
 ) const
 {
@@ -65,6 +89,9 @@ void Foam::rbd::restingContactSolver::frictionStage
     const boolList& fixed = problem.fixed;
     List<vector>& Ffric = buf_.Ffric;
     List<vector>& tauFric = buf_.tauFric;
+
+    // Friction of each contact [N]
+    List<vector> friction(contacts.size(), Zero);
 
     // Islands of material contact points (mesh pellets, cylinders and
     // rings against the tube): normal forces and friction in one
@@ -135,17 +162,7 @@ void Foam::rbd::restingContactSolver::frictionStage
         }
         for (const label s : staggeredIslands)
         {
-            Eigen::VectorXd phi;
-            const std::vector<label>& island = islands_.contacts(s);
-            normalRows_.solve
-            (
-                problem, s, island, Fb, tb, true, assembly_, *solver_,
-                active_, res, phi
-            );
-            for (size_t a = 0; a < island.size(); ++a)
-            {
-                phiAll[island[a]] = phi(a);
-            }
+            normalPass(problem, s, Fb, tb, true, phiAll, res);
         }
     }
 }
@@ -204,53 +221,24 @@ Foam::rbd::restingContactSolver::solve
     List<vector>& Ffric = buf_.Ffric;
     List<vector>& tauFric = buf_.tauFric;
 
-    // Friction of each contact [N]
-    List<vector> friction(contacts.size(), Zero);
-
-    // Warm start: pairs active in the previous step (then in pass 1)
-    warmStart& active = active_;
-
     const restingProblem problem{bodies, contacts, fixed, h};
 
-    // The normal forces of island s for the forces Fb, tb; its matrix as
-    // the first pass assembled it where assembled
+    // Pass 1: normal forces without friction, warm-started from the pairs
+    // active in the previous step; then those of pass 1 are the guess of
+    // pass 2
     normalRows_.resize(islands_.size());
-    auto solveIsland =
-    [&](const label s, const UList<vector>& Fb, const UList<vector>& tb,
-        Eigen::VectorXd& phi, const bool assembled)
-    {
-        normalRows_.solve
-        (
-            problem, s, islands_.contacts(s), Fb, tb, assembled, assembly_,
-            *solver_, active, res, phi
-        );
-    };
-
-    // Pass 1: normal forces without friction
     List<scalar> phiAll(contacts.size(), scalar(0));
     for (label s = 0; s < islands_.size(); ++s)
     {
-        Eigen::VectorXd phi;
-        const std::vector<label>& island = islands_.contacts(s);
-        solveIsland(s, Fext, tauExt, phi, false);
-        for (size_t a = 0; a < island.size(); ++a)
-        {
-            phiAll[island[a]] = phi(a);
-        }
+        normalPass(problem, s, Fext, tauExt, false, phiAll, res);
     }
-
-    auto recordActive = [&]()
-    {
-        active.record(contacts, phiAll);
-    };
-    recordActive();
+    active_.record(contacts, phiAll);
 
     if (anyFriction)
     {
-        frictionStage(problem, moved, Fext, tauExt, phiAll, friction, res);
+        frictionStage(problem, moved, Fext, tauExt, phiAll, res);
     }
-
-    recordActive();
+    active_.record(contacts, phiAll);
 
     // Total: external + friction + normal (the friction is zero on a body
     // no contact moves)

@@ -4,7 +4,6 @@
 
 #include "world.H"
 #include "stateIO.H"
-#include "sphereContacts.H"
 #include "midpointIntegrator.H"
 #include <algorithm>
 
@@ -27,10 +26,7 @@ Foam::rbd::world::world
     rb_(shape.boundingRadius()),
     band_(controls.proximity*shape.boundingRadius()),
     touch_(controls.contactTolerance*shape.diameter()),
-    projection_
-    (
-        controls.contactTolerance*shape.diameter(), shape.boundingRadius()
-    ),
+    projection_(controls.contactTolerance*shape.diameter(), rb_),
     dispatch_
     (
         shape, container, material.restitution, material.friction, band_,
@@ -591,17 +587,15 @@ void Foam::rbd::world::readState(stateReader& in)
             << ": it is damaged." << nl
             << "    Delete it and run without -resume." << exit(FatalError);
     }
+    // (its pairs are checked against its snapshots as it reads them)
     neighbours_.readState(in);
-    for (const labelPair& pr : neighbours_.pairs())
+    if (neighbours_.adjacency().size() != n)
     {
-        if (pr.first() < 0 || pr.first() >= pr.second() || pr.second() >= n)
-        {
-            FatalErrorInFunction
-                << "The checkpoint " << in.name().c_str() << " lists the "
-                << "pair (" << pr.first() << ' ' << pr.second() << ") of "
-                << n << " pellets: it is damaged." << nl
-                << "    Delete it and run without -resume." << exit(FatalError);
-        }
+        FatalErrorInFunction
+            << "The checkpoint " << in.name().c_str() << " holds " << n
+            << " pellets but neighbour lists of "
+            << neighbours_.adjacency().size() << ": it is damaged." << nl
+            << "    Delete it and run without -resume." << exit(FatalError);
     }
     resting_.readState(in);
 

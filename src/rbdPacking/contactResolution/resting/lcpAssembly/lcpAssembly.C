@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "lcpAssembly.H"
+#include "lcpActiveSet.H"
 #include <Eigen/Dense>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -95,7 +96,6 @@ void Foam::rbd::lcpAssembly::assemble
     // point): the same A as the triplets and setFromTriplets this replaced
     // (its sort through a row-major copy was 8 % of a 500-sphere packing)
     A.resize(n, n);
-    A.resizeNonZeros(0);
     slot_.assign(n, -1);
     {
         // Entries: at most the rows on the bodies of each row
@@ -147,19 +147,7 @@ void Foam::rbd::lcpAssembly::assemble
             }
         }
         // Rows ascending, as Eigen keeps them; the slots free again
-        for (int m = outer[b] + 1; m < e; ++m)
-        {
-            const int r = inner[m];
-            const double v = value[m];
-            int k = m;
-            for (; k > outer[b] && inner[k - 1] > r; --k)
-            {
-                inner[k] = inner[k - 1];
-                value[k] = value[k - 1];
-            }
-            inner[k] = r;
-            value[k] = v;
-        }
+        sortCompressedColumn(inner, value, outer[b], e);
         for (int m = outer[b]; m < e; ++m)
         {
             slot_[inner[m]] = -1;
