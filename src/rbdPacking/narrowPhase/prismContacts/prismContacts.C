@@ -4,7 +4,7 @@
 
 #include "prismContacts.H"
 #include "cylinderContacts.H"
-#include "meshContacts.H"
+#include "contactReduction.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -753,7 +753,7 @@ void Foam::rbd::prismContacts::prismPrism
     scan(otherPrism{profile_, M.T(), -(M.T() & t), band_}, hits_);
     addHits(hits_, i, bi, k, bk, true, contacts);
 
-    meshContacts::reduce
+    contactReduction::reduce
     (
         contacts, start, mergeDistance_, 0.1*band_, keepAll, laterCorners
     );
@@ -826,7 +826,7 @@ void Foam::rbd::prismContacts::prismTube
         scan(tubeWallDistance{M, t, Rt, band_}, hits_);
         add(tubeWall);
     }
-    meshContacts::reduce
+    contactReduction::reduce
     (
         contacts, start, mergeDistance_, 0.1*band_, keepAll, laterCorners
     );

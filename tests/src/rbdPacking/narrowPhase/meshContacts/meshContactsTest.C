@@ -1,8 +1,9 @@
 // Mesh contacts of src/rbdPacking/narrowPhase/meshContacts against closed
 // forms: cube on the floor (4 corners), two boxes edge on edge, a vertex on
-// a face, face on face interpenetrating, sphere against a mesh sphere, and
-// the reduction of a flat patch to its corners; against brute force:
-// washers touching or crossing, convex pairs against separating axes.
+// a face, face on face interpenetrating, sphere against a mesh sphere;
+// against brute force:
+// washers touching or crossing, convex pairs against separating axes. The
+// reduction of a flat patch: narrowPhase/contactReduction.
 
 #include <gtest/gtest.h>
 #include "meshContacts.H"
@@ -262,52 +263,6 @@ TEST(meshContacts, meshSpheresAgreeWithExactSpheres)
     EXPECT_GT(nDeepest & dir, Foam::cos(0.1));
     EXPECT_GE(minGap, gap - 1e-12);
     EXPECT_LE(minGap, gap + 2*sagitta);
-}
-
-
-TEST(meshContacts, reductionKeepsTheDeepestAndTheCornersOfAPatch)
-{
-    // A 5 x 5 grid of contacts on a plane, the corner (0, 0) deepest, and
-    // one contact with another normal
-    DynamicList<contact> cs;
-    contact other;
-    other.n = vector(1, 0, 0);
-    other.p = point(0, 0, 1);
-    other.gap = 0;
-    cs.append(other);
-    for (label i = 0; i < 5; ++i)
-    {
-        for (label j = 0; j < 5; ++j)
-        {
-            contact c;
-            c.n = vector(0, 0, 1);
-            c.p = point(i, j, 0);
-            c.gap = (i == 0 && j == 0) ? -1 : 0.01*(i + j);
-            cs.append(c);
-        }
-    }
-    meshContacts::reduce(cs, 0, 1e-6, 0);
-
-    // The other normal is its own group
-    ASSERT_EQ(cs.size(), 4 + 1);
-    label corners = 0;
-    label others = 0;
-    scalar minGap = GREAT;
-    for (const contact& c : cs)
-    {
-        if (c.n == vector(1, 0, 0))
-        {
-            ++others;
-            continue;
-        }
-        const point& p = c.p;
-        corners +=
-            (p.x() == 0 || p.x() == 4) && (p.y() == 0 || p.y() == 4);
-        minGap = min(minGap, c.gap);
-    }
-    EXPECT_EQ(others, 1);
-    EXPECT_EQ(corners, 4);
-    EXPECT_EQ(minGap, -1);
 }
 
 

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include "../../testTools/worldFixture.H"
 #include "prismContacts.H"
+#include "contactReduction.H"
 #include "meshContacts.H"
 #include "cylinderContacts.H"
 #include "pelletShape.H"
@@ -1073,7 +1074,7 @@ TEST(prismContacts, ringLyingAcrossAnotherRingsBore)
         for (const contact& c : cs)
         {
             EXPECT_GE(c.gap, g - 1e-12);
-            if ((c.n & ez) > Foam::cos(meshContacts::clusterAngle))
+            if ((c.n & ez) > Foam::cos(contactReduction::clusterAngle))
             {
                 if (c.p.y() > ri)
                 {
