@@ -5,8 +5,148 @@
 #include "contactDispatch.H"
 #include "sphereContacts.H"
 #include "cylinderContacts.H"
-#include "cylinder.H"
-#include "ring.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::rbd::contactDispatch::pairEntry
+(&Foam::rbd::contactDispatch::pairTable())[nGeometries][nGeometries]
+{
+    static pairEntry table[nGeometries][nGeometries];
+    return table;
+}
+
+
+Foam::rbd::contactDispatch::containerGenerator
+(&Foam::rbd::contactDispatch::containerTable())[nGeometries]
+{
+    static containerGenerator table[nGeometries] = {};
+    return table;
+}
+
+
+void Foam::rbd::contactDispatch::registerPair
+(
+    const geometry a,
+    const geometry b,
+    const pairGenerator generate
+)
+{
+    pairTable()[a][b] = pairEntry{generate, false};
+    if (a != b)
+    {
+        pairTable()[b][a] = pairEntry{generate, true};
+    }
+}
+
+
+bool Foam::rbd::contactDispatch::registerGenerators()
+{
+    registerPair(sphereGeometry, sphereGeometry, &contactDispatch::spherePair);
+    registerPair(meshGeometry, meshGeometry, &contactDispatch::meshPair);
+    registerPair(prismGeometry, prismGeometry, &contactDispatch::prismPair);
+
+    containerTable()[sphereGeometry] = &contactDispatch::sphereContainer;
+    containerTable()[meshGeometry] = &contactDispatch::meshContainer;
+    containerTable()[prismGeometry] = &contactDispatch::prismContainer;
+    return true;
+}
+
+
+void Foam::rbd::contactDispatch::setMaterial
+(
+    DynamicList<contact>& contacts,
+    const label start,
+    const scalar e,
+    const scalar mu
+)
+{
+    for (label ci = start; ci < contacts.size(); ++ci)
+    {
+        contacts[ci].e = e;
+        contacts[ci].mu = mu;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Generators  * * * * * * * * * * * * * * * //
+
+void Foam::rbd::contactDispatch::spherePair
+(
+    const label i, const rigidBody& bi,
+    const label k, const rigidBody& bk,
+    DynamicList<contact>& contacts, const label
+) const
+{
+    contact c;
+    if (sphereContacts::sphereSphere(i, bi, rb_, k, bk, rb_, band_, c))
+    {
+        contacts.append(c);
+    }
+}
+
+
+void Foam::rbd::contactDispatch::meshPair
+(
+    const label i, const rigidBody& bi,
+    const label k, const rigidBody& bk,
+    DynamicList<contact>& contacts, const label thread
+) const
+{
+    meshes_[thread].meshMesh(i, bi, k, bk, contacts);
+}
+
+
+void Foam::rbd::contactDispatch::prismPair
+(
+    const label i, const rigidBody& bi,
+    const label k, const rigidBody& bk,
+    DynamicList<contact>& contacts, const label thread
+) const
+{
+    prisms_[thread].prismPrism(i, bi, k, bk, contacts);
+}
+
+
+void Foam::rbd::contactDispatch::sphereContainer
+(
+    const label i, const rigidBody& bi,
+    DynamicList<contact>& contacts
+) const
+{
+    sphereContacts::sphereTube(i, bi, rb_, tube_, band_, contacts);
+}
+
+
+void Foam::rbd::contactDispatch::meshContainer
+(
+    const label i, const rigidBody& bi,
+    DynamicList<contact>& contacts
+) const
+{
+    if (hullRadius_ > 0)
+    {
+        cylinderContacts::cylinderTube
+        (
+            i, bi, hullRadius_, hullHalfHeight_, tube_, band_, contacts,
+            hullRimAngles_
+        );
+    }
+    else
+    {
+        meshes_[0].meshTube(i, bi, tube_, contacts);
+    }
+}
+
+
+void Foam::rbd::contactDispatch::prismContainer
+(
+    const label i, const rigidBody& bi,
+    DynamicList<contact>& contacts
+) const
+{
+    prisms_[0].prismTube(i, bi, tube_, contacts);
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -23,6 +163,7 @@ Foam::rbd::contactDispatch::contactDispatch
 :
     shape_(shape),
     tube_(container),
+    geometry_(sphereGeometry),
     restitution_(restitution),
     friction_(friction),
     rb_(shape.boundingRadius()),
@@ -34,45 +175,42 @@ Foam::rbd::contactDispatch::contactDispatch
     hullHalfHeight_(0),
     hullRimAngles_()
 {
+    static const bool registered = registerGenerators();
+    (void)registered;
+
     const word model(pairModel(shape_, contactModel));
     const label nThreads = max(threads, label(1));
     if (model == "prism")
     {
+        geometry_ = prismGeometry;
         prism_ = shape_.prism();
         prisms_.setSize(nThreads);
         forAll(prisms_, t)
         {
             prisms_.set(t, new prismContacts(prism_(), band_));
         }
-        return;
     }
-    if (model == "mesh")
+    else if (model == "mesh")
     {
+        geometry_ = meshGeometry;
         meshes_.setSize(nThreads);
         forAll(meshes_, t)
         {
             meshes_.set(t, new meshContacts(shape_.mesh(), band_));
         }
-    }
 
-    // auto: the container by the hull where the shape has one (its rims
-    // as the mesh's polygons); contactModel mesh: by the mesh
-    if (model == "mesh" && contactModel != "mesh")
-    {
-        if (isA<cylinder>(shape_))
+        // auto: the container by the hull where the shape has one (its
+        // rims as the mesh's polygons); contactModel mesh: by the mesh
+        scalar radius = 0;
+        scalar halfHeight = 0;
+        if
+        (
+            contactModel != "mesh"
+         && shape_.cylindricalHull(radius, halfHeight)
+        )
         {
-            const cylinder& s = refCast<const cylinder>(shape_);
-            hullRadius_ = 0.5*s.diameter();
-            hullHalfHeight_ = 0.5*s.height();
-        }
-        else if (isA<ring>(shape_))
-        {
-            const ring& s = refCast<const ring>(shape_);
-            hullRadius_ = 0.5*s.diameter();
-            hullHalfHeight_ = 0.5*s.height();
-        }
-        if (hullRadius_ > 0)
-        {
+            hullRadius_ = radius;
+            hullHalfHeight_ = halfHeight;
             hullRimAngles_ = cylinderContacts::rimAngles
             (
                 shape_.mesh().points(), hullRadius_
@@ -115,6 +253,18 @@ Foam::word Foam::rbd::contactDispatch::pairModel
 }
 
 
+Foam::rbd::contactDispatch::pairEntry Foam::rbd::contactDispatch::pairOf
+(
+    const geometry a,
+    const geometry b
+)
+{
+    static const bool registered = registerGenerators();
+    (void)registered;
+    return pairTable()[a][b];
+}
+
+
 void Foam::rbd::contactDispatch::pelletPair
 (
     const label i,
@@ -126,29 +276,20 @@ void Foam::rbd::contactDispatch::pelletPair
 ) const
 {
     const label start = contacts.size();
-    if (!prisms_.empty())
+    const pairEntry& entry = pairTable()[geometry_][geometry_];
+    if (!entry.reversed)
     {
-        prisms_[thread].prismPrism(i, bi, k, bk, contacts);
-    }
-    else if (meshes())
-    {
-        meshes_[thread].meshMesh(i, bi, k, bk, contacts);
+        (this->*entry.generate)(i, bi, k, bk, contacts, thread);
     }
     else
     {
-        contact c;
-        if (sphereContacts::sphereSphere(i, bi, rb_, k, bk, rb_, band_, c))
+        (this->*entry.generate)(k, bk, i, bi, contacts, thread);
+        for (label ci = start; ci < contacts.size(); ++ci)
         {
-            contacts.append(c);
+            contacts[ci] = reversed(contacts[ci]);
         }
     }
-
-    // The pair's material (the container's is set by the generators)
-    for (label ci = start; ci < contacts.size(); ++ci)
-    {
-        contacts[ci].e = restitution_;
-        contacts[ci].mu = friction_;
-    }
+    setMaterial(contacts, start, restitution_, friction_);
 }
 
 
@@ -159,26 +300,9 @@ void Foam::rbd::contactDispatch::pelletContainer
     DynamicList<contact>& contacts
 ) const
 {
-    if (!prisms_.empty())
-    {
-        prisms_[0].prismTube(i, bi, tube_, contacts);
-    }
-    else if (!meshes())
-    {
-        sphereContacts::sphereTube(i, bi, rb_, tube_, band_, contacts);
-    }
-    else if (hullRadius_ > 0)
-    {
-        cylinderContacts::cylinderTube
-        (
-            i, bi, hullRadius_, hullHalfHeight_, tube_, band_, contacts,
-            hullRimAngles_
-        );
-    }
-    else
-    {
-        meshes_[0].meshTube(i, bi, tube_, contacts);
-    }
+    const label start = contacts.size();
+    (this->*containerTable()[geometry_])(i, bi, contacts);
+    setMaterial(contacts, start, tube_.restitution(), tube_.friction());
 }
 
 

@@ -41,7 +41,7 @@ namespace
 
     //- The contacts of the two rims of one cylinder (radius a) with the
     //  tube's bottom and wall: the candidates of each rim (circle points or
-    //  polygon vertices), appended with the container's e and mu
+    //  polygon vertices), appended; e and mu are left to the caller
     class rimsInTube
     {
         const label i_;
@@ -90,8 +90,6 @@ namespace
             c.k = part;
             c.gap = gap;
             c.nDot = Zero;
-            c.e = container_.restitution();
-            c.mu = container_.friction();
             c.centreBased = false;
             c.ri = p - x;
             if (part == tubeBottom)

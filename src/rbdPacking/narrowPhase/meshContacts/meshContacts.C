@@ -127,8 +127,6 @@ void Foam::rbd::meshContacts::meshTube
         c.gap = p.z();
         c.p = point(p.x(), p.y(), 0.5*p.z());
         c.nDot = Zero;
-        c.e = container.restitution();
-        c.mu = container.friction();
         c.centreBased = false;
         c.ri = p - x;
         c.rk = point(p.x(), p.y(), 0);
@@ -166,8 +164,6 @@ void Foam::rbd::meshContacts::meshTube
         c.gap = gap;
         c.p = p + 0.5*gap*er;
         c.nDot = Zero;
-        c.e = container.restitution();
-        c.mu = container.friction();
         c.centreBased = false;
         c.ri = p - x;
         c.rk = p + gap*er;

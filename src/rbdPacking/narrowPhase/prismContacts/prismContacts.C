@@ -804,8 +804,6 @@ void Foam::rbd::prismContacts::prismTube
             c.gap = hp.gap;
             c.p = p - 0.5*hp.gap*hp.n;
             c.nDot = Zero;
-            c.e = container.restitution();
-            c.mu = container.friction();
             c.centreBased = false;
             c.ri = p - x;
             c.rk = p - hp.gap*hp.n;

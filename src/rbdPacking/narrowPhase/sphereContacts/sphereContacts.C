@@ -67,8 +67,6 @@ void Foam::rbd::sphereContacts::sphereTube
         c.p = point(x.x(), x.y(), 0.5*zGap);
         c.nDot = Zero;
         c.centreBased = true;
-        c.e = container.restitution();
-        c.mu = container.friction();
         contacts.append(c);
     }
 
@@ -88,8 +86,6 @@ void Foam::rbd::sphereContacts::sphereTube
         c.p = (rho + a + 0.5*rGap)*er + vector(0, 0, x.z());
         c.nDot = -(vh - er*(er & vh))/rho;
         c.centreBased = true;
-        c.e = container.restitution();
-        c.mu = container.friction();
         contacts.append(c);
     }
 }

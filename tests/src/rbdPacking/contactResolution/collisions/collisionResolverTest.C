@@ -51,6 +51,11 @@ namespace
             bs[0] = rigidBody(m, Ib, point(0, 0, a), quaternion(1), true);
             bs[0].setState(point(0, 0, a), quaternion(1), m*v, Zero);
             sphereContacts::sphereTube(0, bs[0], a, t, 1e-3, cs);
+            for (contact& c : cs)
+            {
+                c.e = e;
+                c.mu = mu;
+            }
         }
     };
 }

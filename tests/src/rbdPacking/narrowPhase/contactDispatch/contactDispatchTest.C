@@ -112,3 +112,141 @@ TEST(contactDispatch, cylinderMeetsTheContainerByItsHull)
         }
     }
 }
+
+
+TEST(contactDispatch, tableHasAGeneratorForEachGeometryAndTheContainer)
+{
+    // The diagonal of the pair table is filled for every geometry, and
+    // each dispatch takes the geometry its contactModel names
+    for
+    (
+        const contactDispatch::geometry g :
+        {
+            contactDispatch::sphereGeometry,
+            contactDispatch::meshGeometry,
+            contactDispatch::prismGeometry
+        }
+    )
+    {
+        const contactDispatch::pairEntry e = contactDispatch::pairOf(g, g);
+        EXPECT_NE(e.generate, nullptr) << label(g);
+        EXPECT_FALSE(e.reversed) << label(g);
+    }
+
+    const autoPtr<pelletShape> cyl
+    (
+        shapeOf("shape cylinder; diameter 0.01; height 0.01; faces 200;")
+    );
+    const autoPtr<pelletShape> sphere(shapeOf("shape sphere; diameter 0.01;"));
+    const tube container(0.05, 0.1, 0.6, 0.1);
+    EXPECT_EQ
+    (
+        contactDispatch(sphere(), container, 0.5, 0.5, band, "auto")
+       .pelletGeometry(),
+        contactDispatch::sphereGeometry
+    );
+    EXPECT_EQ
+    (
+        contactDispatch(cyl(), container, 0.5, 0.5, band, "auto")
+       .pelletGeometry(),
+        contactDispatch::meshGeometry
+    );
+    EXPECT_EQ
+    (
+        contactDispatch(cyl(), container, 0.5, 0.5, band, "exact")
+       .pelletGeometry(),
+        contactDispatch::prismGeometry
+    );
+}
+
+
+TEST(contactDispatch, materialIsSetInOnePlaceForEveryGeometry)
+{
+    // Two cylinders stacked face on face on the floor, 0.1 band apart,
+    // under each contactModel: the generators leave e and mu; the pair's
+    // contacts get the pellets' (0.4, 0.3), the floor's the tube's (0.2,
+    // 0.7)
+    const autoPtr<pelletShape> cyl
+    (
+        shapeOf("shape cylinder; diameter 0.01; height 0.01; faces 200;")
+    );
+    const tube container(0.05, 0.1, 0.7, 0.2);
+    const rigidBody lower(bodyAt(point(0, 0, 0.5*d), quaternion(1)));
+    const rigidBody upper
+    (
+        bodyAt(point(0, 0, 1.5*d + 0.1*band), quaternion(1))
+    );
+    for (const word model : {"auto", "mesh", "exact"})
+    {
+        const contactDispatch cd(cyl(), container, 0.4, 0.3, band, model);
+        DynamicList<contact> cs;
+        cd.pelletPair(1, upper, 0, lower, cs);
+        ASSERT_GE(cs.size(), 3) << model;
+        for (const contact& c : cs)
+        {
+            EXPECT_EQ(c.e, 0.4) << model;
+            EXPECT_EQ(c.mu, 0.3) << model;
+            EXPECT_GT(c.n.z(), 0.99) << model;
+        }
+        cs.clear();
+        cd.pelletContainer(0, lower, cs);
+        ASSERT_GE(cs.size(), 3) << model;
+        for (const contact& c : cs)
+        {
+            EXPECT_EQ(c.e, 0.2) << model;
+            EXPECT_EQ(c.mu, 0.7) << model;
+        }
+    }
+}
+
+
+TEST(contactDispatch, aReversedContactIsTheSameContactSeenFromTheOtherBody)
+{
+    // The floor-to-pellet contact of a mesh pair, reversed: bodies,
+    // normal, its rate, material points and round features exchanged; its
+    // gap from the material points is unchanged; reversed twice, the same
+    const autoPtr<pelletShape> cyl
+    (
+        shapeOf("shape cylinder; diameter 0.01; height 0.01; faces 200;")
+    );
+    const tube container(0.05, 0.1, 0.7, 0.2);
+    List<rigidBody> bodies(2);
+    bodies[0] = bodyAt(point(0, 0, 0.5*d), quaternion(1));
+    bodies[1] = bodyAt
+    (
+        point(0.001, 0, 1.5*d + 0.1*band),
+        quaternion(vector(1, 0, 0), 0.01)
+    );
+    const contactDispatch cd(cyl(), container, 0.4, 0.3, band, "mesh");
+    DynamicList<contact> cs;
+    cd.pelletPair(1, bodies[1], 0, bodies[0], cs);
+    ASSERT_GE(cs.size(), 1);
+    for (contact c : cs)
+    {
+        c.axisI = vector(0, 0, 1);
+        c.rhoI = 0.002;
+        const contact r(reversed(c));
+        EXPECT_EQ(r.i, c.k);
+        EXPECT_EQ(r.k, c.i);
+        EXPECT_EQ(r.n, -c.n);
+        EXPECT_EQ(r.nDot, -c.nDot);
+        EXPECT_EQ(r.ri, c.rk);
+        EXPECT_EQ(r.rk, c.ri);
+        EXPECT_EQ(r.axisK, c.axisI);
+        EXPECT_EQ(r.rhoK, c.rhoI);
+        EXPECT_EQ(r.p, c.p);
+        EXPECT_EQ(r.e, c.e);
+        EXPECT_NEAR
+        (
+            meshContacts::gap(r, bodies, container),
+            meshContacts::gap(c, bodies, container),
+            1e-15
+        );
+        const contact rr(reversed(r));
+        EXPECT_EQ(rr.i, c.i);
+        EXPECT_EQ(rr.n, c.n);
+        EXPECT_EQ(rr.ri, c.ri);
+        EXPECT_EQ(rr.axisI, c.axisI);
+        EXPECT_EQ(rr.rhoI, c.rhoI);
+    }
+}

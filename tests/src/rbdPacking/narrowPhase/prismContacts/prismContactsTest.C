@@ -1199,8 +1199,6 @@ TEST(prismContacts, cylinderAndRingLyingOnTheFloor)
                 EXPECT_NEAR(mag(c.n - ez), 0, 1e-12);
                 EXPECT_NEAR((b.x() + c.ri).z(), g, 1e-12);
                 EXPECT_NEAR(mag(c.ri & axis), r, 1e-12);
-                EXPECT_EQ(c.e, 0.5);
-                EXPECT_EQ(c.mu, 0.3);
                 along += c.ri & axis;
             }
             EXPECT_NEAR(along, 0, 1e-12);
