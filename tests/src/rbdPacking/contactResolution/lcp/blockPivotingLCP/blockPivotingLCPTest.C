@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
 #include "blockPivotingLCP.H"
-#include "enumerationLCP.H"
+#include "rbdPacking/contactResolution/lcp/enumerationLCP/enumerationLCP.H"
 #include <fstream>
 
 using namespace Foam;

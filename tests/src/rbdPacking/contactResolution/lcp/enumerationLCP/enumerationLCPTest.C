@@ -1,9 +1,9 @@
-// Unit tests for src/rbdPacking/contactResolution/lcp/enumerationLCP, the
-// reference solver: closed forms, the smallest active set, the size limit
+// Unit tests for the tests' reference LCP solver (enumerationLCP, beside
+// this file): closed forms, the smallest active set, the size limit
 
 #include <gtest/gtest.h>
 #include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
-#include "enumerationLCP.H"
+#include "rbdPacking/contactResolution/lcp/enumerationLCP/enumerationLCP.H"
 
 using namespace Foam;
 using namespace lcpTest;

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
 #include "projectedGaussSeidelLCP.H"
-#include "enumerationLCP.H"
+#include "rbdPacking/contactResolution/lcp/enumerationLCP/enumerationLCP.H"
 
 using namespace Foam;
 using namespace lcpTest;

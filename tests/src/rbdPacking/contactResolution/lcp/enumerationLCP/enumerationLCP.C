@@ -2,7 +2,7 @@
   rbdPacking: hard-body rigid body dynamics packings for OpenFOAM
 \*---------------------------------------------------------------------------*/
 
-#include "enumerationLCP.H"
+#include "rbdPacking/contactResolution/lcp/enumerationLCP/enumerationLCP.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 #include "error.H"
