@@ -685,6 +685,8 @@ class Benchmark:
         self.overrides = parseSetOption(args.set)
         self.lock = threading.Lock()
         self.rows = self._readCsv()
+        # Cases asked for with no result for their settings (run())
+        self.notRun = []
         self.started = datetime.datetime.now()
         self.machine = None
 
@@ -885,6 +887,13 @@ class Benchmark:
                 row.update(c.params)
                 row['caseDir'] = ROOT / row['dir']
                 out.append(row)
+            else:
+                # No result with these settings: the report says so (a
+                # rerun with other options, say --engines or --end-time,
+                # hashes its cases differently and would otherwise drop
+                # the rows of the cached settings without a word)
+                other = sorted(h for (n, h) in self.rows if n == c.name)
+                self.notRun.append((c.name, c.hash(self.overrides), other))
         return out
 
     # report
@@ -1044,6 +1053,16 @@ class Report:
         out = ['# ' + self.title, '']
         for p in self.parts:
             out += [p, '']
+        if b.notRun:
+            out += ['**Not in this report**: cases with no result for '
+                    'these settings (run the command below without '
+                    '`--report-only`; a result under other settings is '
+                    'in the cache as the hash named):', '']
+            out += ['- %s (settings %s)%s'
+                    % (name, h, '; cached under ' + ', '.join(other)
+                       if other else '')
+                    for name, h, other in b.notRun]
+            out += ['']
         out += ['## Reproduce', '',
                 'From the repository root, after `./Allwmake` and '
                 '`bin/tools/installDependencies -benchmarks`:', '',
