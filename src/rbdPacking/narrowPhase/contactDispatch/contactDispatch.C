@@ -8,47 +8,41 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::rbd::contactDispatch::pairEntry
-(&Foam::rbd::contactDispatch::pairTable())[nGeometries][nGeometries]
+Foam::rbd::contactDispatch::generatorTable::generatorTable()
+:
+    pairs(),
+    containers()
 {
-    static pairEntry table[nGeometries][nGeometries];
-    return table;
+    registerPair(sphereGeometry, sphereGeometry, &contactDispatch::spherePair);
+    registerPair(meshGeometry, meshGeometry, &contactDispatch::meshPair);
+    registerPair(prismGeometry, prismGeometry, &contactDispatch::prismPair);
+
+    containers[sphereGeometry] = &contactDispatch::sphereContainer;
+    containers[meshGeometry] = &contactDispatch::meshContainer;
+    containers[prismGeometry] = &contactDispatch::prismContainer;
 }
 
 
-Foam::rbd::contactDispatch::containerGenerator
-(&Foam::rbd::contactDispatch::containerTable())[nGeometries]
-{
-    static containerGenerator table[nGeometries] = {};
-    return table;
-}
-
-
-void Foam::rbd::contactDispatch::registerPair
+void Foam::rbd::contactDispatch::generatorTable::registerPair
 (
     const geometry a,
     const geometry b,
     const pairGenerator generate
 )
 {
-    pairTable()[a][b] = pairEntry{generate, false};
+    pairs[a][b] = pairEntry{generate, false};
     if (a != b)
     {
-        pairTable()[b][a] = pairEntry{generate, true};
+        pairs[b][a] = pairEntry{generate, true};
     }
 }
 
 
-bool Foam::rbd::contactDispatch::registerGenerators()
+const Foam::rbd::contactDispatch::generatorTable&
+Foam::rbd::contactDispatch::table()
 {
-    registerPair(sphereGeometry, sphereGeometry, &contactDispatch::spherePair);
-    registerPair(meshGeometry, meshGeometry, &contactDispatch::meshPair);
-    registerPair(prismGeometry, prismGeometry, &contactDispatch::prismPair);
-
-    containerTable()[sphereGeometry] = &contactDispatch::sphereContainer;
-    containerTable()[meshGeometry] = &contactDispatch::meshContainer;
-    containerTable()[prismGeometry] = &contactDispatch::prismContainer;
-    return true;
+    static const generatorTable theTable;
+    return theTable;
 }
 
 
@@ -175,9 +169,6 @@ Foam::rbd::contactDispatch::contactDispatch
     hullHalfHeight_(0),
     hullRimAngles_()
 {
-    static const bool registered = registerGenerators();
-    (void)registered;
-
     const word model(pairModel(shape_, contactModel));
     const label nThreads = max(threads, label(1));
     if (model == "prism")
@@ -259,9 +250,7 @@ Foam::rbd::contactDispatch::pairEntry Foam::rbd::contactDispatch::pairOf
     const geometry b
 )
 {
-    static const bool registered = registerGenerators();
-    (void)registered;
-    return pairTable()[a][b];
+    return table().pairs[a][b];
 }
 
 
@@ -276,7 +265,14 @@ void Foam::rbd::contactDispatch::pelletPair
 ) const
 {
     const label start = contacts.size();
-    const pairEntry& entry = pairTable()[geometry_][geometry_];
+    const pairEntry& entry = table().pairs[geometry_][geometry_];
+    if (!entry.generate)
+    {
+        FatalErrorInFunction
+            << "no narrow phase registered for pellets of geometry "
+            << label(geometry_) << " against each other"
+            << exit(FatalError);
+    }
     if (!entry.reversed)
     {
         (this->*entry.generate)(i, bi, k, bk, contacts, thread);
@@ -301,7 +297,15 @@ void Foam::rbd::contactDispatch::pelletContainer
 ) const
 {
     const label start = contacts.size();
-    (this->*containerTable()[geometry_])(i, bi, contacts);
+    const containerGenerator generate = table().containers[geometry_];
+    if (!generate)
+    {
+        FatalErrorInFunction
+            << "no narrow phase registered for pellets of geometry "
+            << label(geometry_) << " against the container"
+            << exit(FatalError);
+    }
+    (this->*generate)(i, bi, contacts);
     setMaterial(contacts, start, tube_.restitution(), tube_.friction());
 }
 

@@ -349,7 +349,7 @@ TEST(worldMesh, userTetrahedronPelletsPackInASmallTube)
     // Six seeds. The largest overlap of a run: the target is 0.5 % dp,
     // not met here in general. The runs are chaotic, and the tetrahedra's
     // acute edges make contacts that are taken too deep or missed (see
-    // meshContacts.C): a run that is quiet can find a contact 0.4 mm
+    // patchSeparation.H): a run that is quiet can find a contact 0.4 mm
     // deep in one step. Measured (% dpv, seeds 1-12): 0.40, 1.06, 6.9,
     // 0.76, 0.34, 0.78, 0.49, 0.80, 0.51, 0.28, 0.31, 1.41 (the build
     // before the per-body broad phase, on other trajectories: seeds 1-6
