@@ -219,20 +219,39 @@ def readBinaryStlVertices(path):
     return tris['v'].reshape(-1, 3).astype(float)
 
 
+def volumeTrueMove(caseDir):
+    """The largest vertex move [m] of the volume-true facets of
+    pellets.stl, as caseDir's log prints it; 0 where it prints none (an
+    older run, or an stl pellet written as given)."""
+    log = Path(caseDir) / 'log'
+    if not log.exists():
+        return 0.0
+    m = re.search(r'vertices moved by at most (\S+) m',
+                  log.read_text(errors='replace'))
+    return float(m.group(1)) if m else 0.0
+
+
 def protrusion(caseDir, D, H, tubeDiameter, tubeHeight, samples=720):
     """Per pellet of caseDir's pellets.csv, the largest distance [m] by
     which it crosses the tube wall, the floor or the tube's top (negative:
     inside; inf for a NaN pose), as a numpy array. None without
     pellets.csv.
 
-    Measured on the pellet meshes the packing simulated and wrote
-    (constant/triSurface/pellets.stl, binary; each vertex assigned to the
-    pellet whose centre is nearest): the exact tube contacts of cylinders
-    and rings hold the vertices of the meshes' rim polygons, and the
-    circle through them crosses the wall by up to the sagitta of a rim
-    segment. Without a binary pellets.stl: the exact outer cylinder
-    (diameter D, height H, axis the body z axis; rims sampled at
-    `samples` points)."""
+    Measured on the pellet meshes the packing simulated (constant/
+    triSurface/pellets.stl, binary; each vertex assigned to the pellet
+    whose centre is nearest): the exact tube contacts of cylinders and
+    rings hold the vertices of the meshes' rim polygons, and the circle
+    through them crosses the wall by up to the sagitta of a rim segment.
+    pellets.stl holds the volume-true facets (pelletMeshes
+    facets::volumeTrue): each boundary loop of a prism offset radially to
+    the area of its circle, by (maxMove/(D/2)) times its radius, maxMove
+    the largest vertex move the log prints. Those facets stand out of the
+    mesh that packed by up to maxMove (0.65 % of d for a 200-face
+    cylinder), so the vertices are moved back, radially about the body
+    axis by the factor 1/(1 + maxMove/(D/2)), before they are measured:
+    the protrusion is that of the pellets as they packed. Without a
+    binary pellets.stl: the exact outer cylinder (diameter D, height H,
+    axis the body z axis; rims sampled at `samples` points)."""
     import numpy as np
     path = Path(caseDir) / 'postProcessing' / 'rbdPackBed' / 'pellets.csv'
     if not path.exists():
@@ -252,19 +271,8 @@ def protrusion(caseDir, D, H, tubeDiameter, tubeHeight, samples=720):
         return np.maximum(np.maximum(radial, -pts[..., 2]),
                           pts[..., 2] - tubeHeight)
 
-    stl = Path(caseDir) / 'constant' / 'triSurface' / 'pellets.stl'
-    verts = readBinaryStlVertices(stl) if stl.exists() else None
-    if verts is not None and not bad.any():
-        worst = np.full(len(c), -np.inf)
-        out = beyond(verts)
-        for start in range(0, len(verts), 20000):
-            chunk = verts[start:start + 20000]
-            owner = np.argmin(((chunk[:, None, :] - c[None, :, :])**2)
-                              .sum(axis=2), axis=1)
-            np.maximum.at(worst, owner, out[start:start + 20000])
-        return worst
-
-    q /= np.linalg.norm(q, axis=1, keepdims=True)
+    if not bad.all():
+        q[~bad] /= np.linalg.norm(q[~bad], axis=1, keepdims=True)
     w, x, y, z = q.T
     # body axes in the world: columns of the rotation matrix
     u = np.stack([1 - 2 * (y * y + z * z), 2 * (x * y + w * z),
@@ -273,6 +281,25 @@ def protrusion(caseDir, D, H, tubeDiameter, tubeHeight, samples=720):
                   2 * (y * z + w * x)], axis=1)
     a = np.stack([2 * (x * z + w * y), 2 * (y * z - w * x),
                   1 - 2 * (x * x + y * y)], axis=1)
+
+    stl = Path(caseDir) / 'constant' / 'triSurface' / 'pellets.stl'
+    verts = readBinaryStlVertices(stl) if stl.exists() else None
+    if verts is not None and not bad.any():
+        # The volume-true offset of the written facets, taken back
+        moved = volumeTrueMove(caseDir)
+        back = (moved / (D / 2)) / (1 + moved / (D / 2)) if moved else 0
+        worst = np.full(len(c), -np.inf)
+        for start in range(0, len(verts), 20000):
+            chunk = verts[start:start + 20000]
+            owner = np.argmin(((chunk[:, None, :] - c[None, :, :])**2)
+                              .sum(axis=2), axis=1)
+            if back:
+                d = chunk - c[owner]
+                ax = a[owner]
+                radial = d - (d * ax).sum(axis=1)[:, None] * ax
+                chunk = chunk - back * radial
+            np.maximum.at(worst, owner, beyond(chunk))
+        return worst
     theta = np.linspace(0, 2 * np.pi, samples, endpoint=False)
     rim = (np.cos(theta)[None, :, None] * u[:, None, :]
            + np.sin(theta)[None, :, None] * v[:, None, :]) * (D / 2)
