@@ -243,8 +243,9 @@ def protrusion(caseDir, D, H, tubeDiameter, tubeHeight, samples=720):
     rings hold the vertices of the meshes' rim polygons, and the circle
     through them crosses the wall by up to the sagitta of a rim segment.
     pellets.stl holds the volume-true facets (pelletMeshes
-    facets::volumeTrue): each boundary loop of a prism offset radially to
-    the area of its circle, by (maxMove/(D/2)) times its radius, maxMove
+    facets::volumeTrue): each boundary loop of a cylinder or a ring (the
+    shapes this is asked for) offset radially to the area of its circle,
+    by (maxMove/(D/2)) times its radius, maxMove
     the largest vertex move the log prints. Those facets stand out of the
     mesh that packed by up to maxMove (0.65 % of d for a 200-face
     cylinder), so the vertices are moved back, radially about the body
