@@ -4,6 +4,7 @@
 
 #include "cylinderContacts.H"
 #include "floorSupport.H"
+#include "containerContact.H"
 #include "mathematicalConstants.H"
 
 #include <algorithm>
@@ -81,31 +82,10 @@ namespace
         {}
 
         //- Append the contact of rim point p with part (tubeBottom or
-        //  tubeWall), gap [m]
-        void add(const point& p, const label part, const scalar gap) const
+        //  tubeWall)
+        void add(const point& p, const containerPart part) const
         {
-            const point& x = bi_.x();
-            contact c;
-            c.i = i_;
-            c.k = part;
-            c.gap = gap;
-            c.nDot = Zero;
-            c.centreBased = false;
-            c.ri = p - x;
-            if (part == tubeBottom)
-            {
-                c.n = vector(0, 0, 1);
-                c.p = point(p.x(), p.y(), 0.5*p.z());
-                c.rk = point(p.x(), p.y(), 0);
-            }
-            else
-            {
-                const scalar rho = tube::axialDistance(p);
-                const vector er(p.x()/rho, p.y()/rho, 0);
-                c.n = -er;
-                c.p = p + 0.5*gap*er;
-                c.rk = p + gap*er;
-            }
+            contact c(containerPointContact(i_, bi_.x(), p, part, container_));
             if (nRim_ < 3)
             {
                 // A circular rim: the point slides along it as the
@@ -170,7 +150,7 @@ namespace
                 {
                     if (q[k].z() < band_)
                     {
-                        add(q[k], tubeBottom, q[k].z());
+                        add(q[k], tubeBottom);
                     }
                 }
             }
@@ -195,7 +175,7 @@ namespace
                 );
                 if (p.z() < band_)
                 {
-                    add(p, tubeBottom, p.z());
+                    add(p, tubeBottom);
                     contacts_.last().axisI = Zero;
                     contacts_.last().rhoI = 0;
                 }
@@ -314,7 +294,7 @@ namespace
                     const scalar rho = tube::axialDistance(q[k]);
                     if (rho > VSMALL && Rt - rho < band_)
                     {
-                        add(q[k], tubeWall, Rt - rho);
+                        add(q[k], tubeWall);
                     }
                 }
             }

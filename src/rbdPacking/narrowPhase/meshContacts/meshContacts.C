@@ -5,6 +5,7 @@
 #include "meshContacts.H"
 #include "floorSupport.H"
 #include "contactReduction.H"
+#include "containerContact.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -120,17 +121,7 @@ void Foam::rbd::meshContacts::meshTube
         {
             continue;
         }
-        contact c;
-        c.i = i;
-        c.k = tubeBottom;
-        c.n = vector(0, 0, 1);
-        c.gap = p.z();
-        c.p = point(p.x(), p.y(), 0.5*p.z());
-        c.nDot = Zero;
-        c.centreBased = false;
-        c.ri = p - x;
-        c.rk = point(p.x(), p.y(), 0);
-        contacts.append(c);
+        contacts.append(containerPointContact(i, x, p, tubeBottom, container));
     }
     {
         // The corners of the support, and the points one step can bring
@@ -151,23 +142,11 @@ void Foam::rbd::meshContacts::meshTube
     {
         const point& p = moved_[v];
         const scalar rho = tube::axialDistance(p);
-        const scalar gap = Rt - rho;
-        if (gap <= -depth_ || rho < VSMALL)
+        if (Rt - rho <= -depth_ || rho < VSMALL)
         {
             continue;
         }
-        const vector er(p.x()/rho, p.y()/rho, 0);
-        contact c;
-        c.i = i;
-        c.k = tubeWall;
-        c.n = -er;
-        c.gap = gap;
-        c.p = p + 0.5*gap*er;
-        c.nDot = Zero;
-        c.centreBased = false;
-        c.ri = p - x;
-        c.rk = p + gap*er;
-        contacts.append(c);
+        contacts.append(containerPointContact(i, x, p, tubeWall, container));
     }
     contactReduction::reduce(contacts, start, mergeDistance_, 0.1*band_);
 }
