@@ -230,6 +230,34 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     Eigen::VectorXd& f
 ) const
 {
+    return solve(A, factors, b, guess, f, nullptr);
+}
+
+
+Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
+(
+    const Eigen::SparseMatrix<double>& A,
+    const lcpFactors& factors,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    Eigen::VectorXd& f,
+    activeSetFactor& kept
+) const
+{
+    return solve(A, factors, b, guess, f, &kept);
+}
+
+
+Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
+(
+    const Eigen::SparseMatrix<double>& A,
+    const lcpFactors& factors,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    Eigen::VectorXd& f,
+    activeSetFactor* kept
+) const
+{
     typedef Eigen::SparseMatrix<double> sparseMatrix;
 
     const label n = b.size();
@@ -302,9 +330,15 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         body.valid() ? natural : orderings_.order(A);
     const Eigen::VectorXd minusB(-b);
 
+    // The factors go to the caller's kept factor where given (contact
+    // space), else to this solver's work space
+    if (body.valid())
+    {
+        kept = nullptr;
+    }
     std::vector<label> pos(n), members, infeasible;
-    activeSetSystem& system = system_;
-    preorderedLDLT& ldlt = ldlt_;
+    activeSetSystem& system = kept ? kept->system : system_;
+    preorderedLDLT& ldlt = kept ? kept->ldlt : ldlt_;
     Eigen::VectorXd z(n), w(n);
 
     // Judice-Pires: block exchanges while the number of infeasible
@@ -332,15 +366,27 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
 
         // (one factorisation; on failure, not expected as A_FF + eps I is
         // positive definite, the interior point and the fallback take over)
+        // (the first candidate from the kept factor where that is the
+        // factor of this set)
+        const bool factorised = kept && kept->holds(members, eps);
+        if (kept)
+        {
+            kept->invalidate();
+        }
         if
         (
             !solveActiveSet
             (
-                A, body.get(), members, pos, eps, minusB, ldlt, system, z
+                A, body.get(), members, pos, eps, minusB, ldlt, system, z,
+                factorised
             )
         )
         {
             break;
+        }
+        if (kept)
+        {
+            kept->set(members, eps);
         }
         w = (body.valid() ? body->product(z) : Eigen::VectorXd(A*z)) + b;
         result.iterations = iter + 1;

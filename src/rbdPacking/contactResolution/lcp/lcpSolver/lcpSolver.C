@@ -56,6 +56,20 @@ Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
 }
 
 
+Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
+(
+    const Eigen::SparseMatrix<double>& A,
+    const lcpFactors& factors,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    Eigen::VectorXd& f,
+    activeSetFactor&
+) const
+{
+    return solve(A, factors, b, guess, f);
+}
+
+
 Foam::scalar Foam::rbd::lcpSolver::violation
 (
     const Eigen::MatrixXd& A,

@@ -116,6 +116,14 @@ void Foam::rbd::normalRows::solve
             p.bodies, contacts, p.fixed, dirs, sys.A, sys.shift, sys.factors
         );
     }
+    if (!sys.kept)
+    {
+        sys.kept.reset(new activeSetFactor());
+    }
+    if (!assembled)
+    {
+        sys.kept->invalidate();
+    }
     const Eigen::SparseMatrix<double>& A = sys.A;
     const Eigen::VectorXd& shift = sys.shift;
 
@@ -136,7 +144,8 @@ void Foam::rbd::normalRows::solve
     }
 
     phi.resize(n);
-    const lcpResult lr = solver.solve(A, sys.factors, B, guess, phi);
+    const lcpResult lr =
+        solver.solve(A, sys.factors, B, guess, phi, *sys.kept);
     res.iterations += lr.iterations;
     res.converged = res.converged && lr.converged;
     res.maxViolation = max(res.maxViolation, lr.maxViolation);

@@ -5,7 +5,8 @@
 // islands recorded from a bed, where the block exchanges cycle; the guess
 // changes the work, not the answer; sparse and dense input agree; the
 // fallback to baraff and the report of a capped solve; A given with its
-// factors (body space) against enumeration and against contact space
+// factors (body space) against enumeration and against contact space;
+// the factor kept between two solves of the same A
 
 #include <gtest/gtest.h>
 #include "rbdPacking/contactResolution/lcp/lcpTestProblems.H"
@@ -262,6 +263,120 @@ TEST(blockPivotingLCP, guessChangesTheWorkNotTheAnswer)
             1
         );
     }
+}
+
+
+TEST(blockPivotingLCP, keptFactorChangesTheWorkNotTheAnswer)
+{
+    // The staggered friction's two normal passes: the same A, b changed;
+    // the second starts from the active set the first ended with, whose
+    // factor the first left in the caller's activeSetFactor
+    const rbd::blockPivotingLCP solver(parse(pureDict));
+    rng gen(17);
+    for (int trial = 0; trial < 60; ++trial)
+    {
+        const problem p = randomProblem(gen, kind::regular);
+        const label n = p.b.size();
+        const Eigen::SparseMatrix<double> A(p.A.sparseView());
+        const rbd::lcpFactors none;
+
+        rbd::activeSetFactor kept;
+        Vec f1;
+        solver.solve(A, none, p.b, {}, f1, kept);
+        ASSERT_TRUE(kept.valid) << trial;
+        std::vector<bool> active(n);
+        for (label i = 0; i < n; ++i)
+        {
+            active[i] = f1(i) > 0;
+        }
+
+        Vec b2(p.b);
+        for (label i = 0; i < n; ++i)
+        {
+            b2(i) += 0.01*uniform(gen, -1, 1)*p.b.cwiseAbs().maxCoeff();
+        }
+        Vec fKept, fFresh;
+        const rbd::lcpResult rKept =
+            solver.solve(A, none, b2, active, fKept, kept);
+        const rbd::lcpResult rFresh = solver.solve(A, none, b2, active, fFresh);
+        EXPECT_EQ(rKept.iterations, rFresh.iterations) << trial;
+        EXPECT_EQ(rKept.converged, rFresh.converged) << trial;
+        EXPECT_TRUE((fKept.array() == fFresh.array()).all())
+            << trial << ": the kept factor changed the forces";
+    }
+}
+
+
+TEST(blockPivotingLCP, keptFactorIsTakenAsTheFactorOfItsSet)
+{
+    // A kept factor is used as it is, without a check of the matrix: the
+    // caller invalidates it when A changes. A factor kept for another
+    // matrix (with the same diagonal) then gives another answer, which
+    // shows the reuse takes place; invalidated, the answer is right again.
+    // One candidate only (maxIterations 1): the answer is the candidate
+    // of the guessed set, not one the exchanges repaired
+    const rbd::blockPivotingLCP solver
+    (
+        parse("interiorPointIterations 0; fallbackSize 0; maxIterations 1;")
+    );
+    const rbd::blockPivotingLCP full(parse(pureDict));
+    rng gen(23);
+    label differed = 0;
+    for (int trial = 0; trial < 20; ++trial)
+    {
+        const problem p = randomProblem(gen, kind::regular);
+        const label n = p.b.size();
+        const Eigen::SparseMatrix<double> A(p.A.sparseView());
+        // Another matrix with the same diagonal (so the same
+        // regularisation): (A + diag(A))/2, positive semidefinite
+        const Eigen::MatrixXd dense2
+        (
+            0.5*p.A + 0.5*Eigen::MatrixXd(p.A.diagonal().asDiagonal())
+        );
+        const Eigen::SparseMatrix<double> A2(dense2.sparseView());
+        const rbd::lcpFactors none;
+
+        rbd::activeSetFactor kept;
+        Vec f;
+        full.solve(A2, none, p.b, {}, f);
+        std::vector<bool> active2(n);
+        for (label i = 0; i < n; ++i)
+        {
+            active2[i] = f(i) > 0;
+        }
+        solver.solve(A2, none, p.b, active2, f, kept);
+        std::vector<bool> active(n);
+        for (label i = 0; i < n; ++i)
+        {
+            active[i] = f(i) > 0;
+        }
+
+        Vec fStale, fRight;
+        solver.solve(A, none, p.b, active, fStale, kept);
+        kept.invalidate();
+        solver.solve(A, none, p.b, active, fRight, kept);
+        Vec fRef;
+        solver.solve(A, p.b, active, fRef);
+        EXPECT_TRUE((fRight.array() == fRef.array()).all()) << trial;
+
+        // A_FF and A2_FF differ where two contacts of F are coupled
+        bool coupled = false;
+        for (label i = 0; i < n; ++i)
+        {
+            for (label j = 0; j < n; ++j)
+            {
+                coupled =
+                    coupled
+                 || (i != j && active[i] && active[j] && p.A(i, j) != 0);
+            }
+        }
+        const bool differs =
+            (fStale - fRef).cwiseAbs().maxCoeff()
+          > 1e-6*fRef.cwiseAbs().maxCoeff();
+        EXPECT_EQ(differs, coupled) << trial;
+        differed += differs;
+    }
+    EXPECT_GT(differed, 5);
 }
 
 
