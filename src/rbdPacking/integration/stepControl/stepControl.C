@@ -252,8 +252,9 @@ Foam::scalar Foam::rbd::stepControl::choose
         // (r + D)): the pair cannot close unseen whatever the step. An
         // approaching one is bounded below. Not for the wall: it is
         // concave, a sphere moving along it closes the gap by up to
-        // h^2 |v_t|^2/(2 (R - a)) more than the linear gap says (the
-        // soak's fast drop went 0.67 % of dp into it without eq 38).
+        // h^2 |v_t|^2/(2 (R - a)) more than the linear gap says (likely
+        // what sent the soak's fast drop 0.67 % of dp into something when
+        // an earlier attempt dropped eq 38 for the wall too; not traced).
         // On the 500-sphere bed: 30 % fewer steps (docs/loadingSpeed.md)
         if (!centreGaps || c.k == tubeWall)
         {

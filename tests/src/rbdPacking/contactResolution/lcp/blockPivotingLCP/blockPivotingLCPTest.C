@@ -61,6 +61,17 @@ namespace
         return r.iterations;
     }
 
+    //- The contacts that carry a force in f
+    std::vector<bool> activeSet(const Vec& f)
+    {
+        std::vector<bool> active(f.size());
+        for (label i = 0; i < f.size(); ++i)
+        {
+            active[i] = f(i) > 0;
+        }
+        return active;
+    }
+
     std::vector<bool> randomGuess(rng& gen, const label n)
     {
         std::vector<bool> guess(n);
@@ -252,11 +263,7 @@ TEST(blockPivotingLCP, guessChangesTheWorkNotTheAnswer)
         // Started from its own answer's active set, one factorisation
         Vec f;
         solver.solve(p.A.sparseView(), p.b, {}, f);
-        std::vector<bool> exact(n);
-        for (label i = 0; i < n; ++i)
-        {
-            exact[i] = f(i) > 0;
-        }
+        const std::vector<bool> exact(activeSet(f));
         EXPECT_EQ
         (
             compareWithEnumeration(solver, p, exact, 1e-8, "exact guess"),
@@ -284,11 +291,7 @@ TEST(blockPivotingLCP, keptFactorChangesTheWorkNotTheAnswer)
         Vec f1;
         solver.solve(A, none, p.b, {}, f1, kept);
         ASSERT_TRUE(kept.valid) << trial;
-        std::vector<bool> active(n);
-        for (label i = 0; i < n; ++i)
-        {
-            active[i] = f1(i) > 0;
-        }
+        const std::vector<bool> active(activeSet(f1));
 
         Vec b2(p.b);
         for (label i = 0; i < n; ++i)
@@ -339,17 +342,9 @@ TEST(blockPivotingLCP, keptFactorIsTakenAsTheFactorOfItsSet)
         rbd::activeSetFactor kept;
         Vec f;
         full.solve(A2, none, p.b, {}, f);
-        std::vector<bool> active2(n);
-        for (label i = 0; i < n; ++i)
-        {
-            active2[i] = f(i) > 0;
-        }
+        const std::vector<bool> active2(activeSet(f));
         solver.solve(A2, none, p.b, active2, f, kept);
-        std::vector<bool> active(n);
-        for (label i = 0; i < n; ++i)
-        {
-            active[i] = f(i) > 0;
-        }
+        const std::vector<bool> active(activeSet(f));
 
         Vec fStale, fRight;
         solver.solve(A, none, p.b, active, fStale, kept);
