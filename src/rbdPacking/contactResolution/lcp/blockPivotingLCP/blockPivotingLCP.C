@@ -45,10 +45,13 @@ namespace
 // * * * * * * * * * * * * * * * Private Classes * * * * * * * * * * * * * //
 
 //- The interior point's Newton matrix A + diag(D), D > 0, factorised
-//  per step: in body space where that pays (with two steps of
-//  iterative refinement on A + D itself: E^-1 is large at loaded
-//  contacts, and r - G y loses digits), else in contact space (the
-//  pattern of A, ordered and analysed once)
+//  per step: in body space where that pays, else in contact space (the
+//  pattern of A, ordered and analysed once). In body space E^-1 is large
+//  at loaded contacts and r - G y loses digits; the direction is not
+//  refined for that: the next step's residual is taken from A itself,
+//  so an inexact direction costs at most a step, and two refinement
+//  steps cost 40 % of the interior point's time for answers within
+//  1e-8 of each other (docs/restingSolveCost.md)
 class Foam::rbd::blockPivotingLCP::newtonSystem
 {
     const sparseMatrix& A_;
@@ -61,9 +64,6 @@ class Foam::rbd::blockPivotingLCP::newtonSystem
     std::vector<double*> diagonal_;
     Eigen::VectorXd M0_;
     sparseLDLT ldlt_;
-
-    //- D of the last factorisation
-    Eigen::VectorXd D_;
 
 public:
 
@@ -107,7 +107,6 @@ public:
     //- Factorise A + diag(D); false if that failed
     bool factorise(const Eigen::VectorXd& D)
     {
-        D_ = D;
         if (body_)
         {
             return body_->factorise
@@ -130,12 +129,7 @@ public:
         {
             return ldlt_.solve(r);
         }
-        Eigen::VectorXd x(body_->apply(r));
-        for (label refine = 0; refine < 2; ++refine)
-        {
-            x += body_->apply(r - product(x) - D_.cwiseProduct(x));
-        }
-        return x;
+        return body_->apply(r);
     }
 };
 
