@@ -51,7 +51,7 @@ namespace
 //  refined for that: the next step's residual is taken from A itself,
 //  so an inexact direction costs at most a step, and two refinement
 //  steps cost 40 % of the interior point's time for answers within
-//  1e-8 of each other (docs/restingSolveCost.md)
+//  2e-8 of each other (docs/restingSolveCost.md)
 class Foam::rbd::blockPivotingLCP::newtonSystem
 {
     const sparseMatrix& A_;
