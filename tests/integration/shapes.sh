@@ -6,7 +6,8 @@
 # outputs by its own route:
 #   - exit 0, 'End', status settled, all 8 pellets released;
 #   - largest interpenetration during the run (summary maxOverlap) below
-#     0.5 % dp, the limit of the mesh stability suite and the soak (docs/soak.md);
+#     the case's bound: 0.5 % dp, the limit of the mesh stability suite and
+#     the soak (docs/soak.md), but where shapes.cases says why not;
 #   - containment: every vertex of pellets.stl within the tube (radius R,
 #     floor z = 0) to 0.1 % dp (ten times contactTolerance, the gap the
 #     overlap correction leaves) plus 2 % dp for the volume-true facets;
@@ -29,9 +30,9 @@ here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/lib/checks.sh"
 
 case="${1:?usage: shapes.sh <case of shapes.cases>}"
-read -r name dp rb volume epsMin epsMax <<< \
+read -r name dp rb volume epsMin epsMax overlapBound <<< \
     "$(grep -E "^$case( |$)" "$here/shapes.cases")"
-if [ "${name:-}" != "$case" ] || [ -z "${epsMax:-}" ]
+if [ "${name:-}" != "$case" ] || [ -z "${overlapBound:-}" ]
 then
     echo "shapes.sh: no case '$case' in shapes.cases" 1>&2
     exit 1
@@ -98,7 +99,8 @@ fi
 check "summary pelletDiameter $(get pelletDiameter) is dp $dp" \
     "awk -v a=$(get pelletDiameter) -v b=$dp 'BEGIN {exit !(a > b*(1 - 1e-5) && a < b*(1 + 1e-5))}'"
 ov="$(get maxOverlap)"
-check "largest overlap $ov m below 0.5 % of dp" "le $ov $(awk -v d=$dp 'BEGIN {print 5e-3*d}')"
+check "largest overlap $ov m below $overlapBound % of dp" \
+    "le $ov $(awk -v d=$dp -v b=$overlapBound 'BEGIN {print b/100*d}')"
 
 awk -F, -f "$here/lib/bedGeometry.awk" -v radii="$tmp/bodyRadii" \
     "$out/pellets.csv" "$stl" > "$tmp/geometry"
