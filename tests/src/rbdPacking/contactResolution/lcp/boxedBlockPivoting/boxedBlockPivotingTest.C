@@ -264,6 +264,54 @@ TEST(boxedBlockPivoting, bodySpaceMatchesEnumeration)
 }
 
 
+TEST(boxedBlockPivoting, interiorPointInBodySpaceMeetsTheToleranceUnrefined)
+{
+    // Heaps of 8-12 contacts with friction on 1-3 spheres (24-36 rows, at
+    // most 18 degrees of freedom; compliance 1e-5 A_aa: A positive
+    // definite but ill-conditioned, E^-1 large where r - G y loses
+    // digits): the interior point alone, its Newton directions not
+    // refined in body space, meets the tolerance and gives the answer
+    // of the same interior point in contact space (a direct LDL^T of A +
+    // D), unique for positive definite A
+    const rbd::boxedBlockPivoting interior(1e-9, 1e-10, 1, 50);
+    rng gen(15);
+    label inBodySpace = 0;
+    for (int trial = 0; trial < 40; ++trial)
+    {
+        const boxedProblem q
+        (
+            randomFrictionProblem(gen, uniformInt(gen, 8, 12))
+        );
+        if (!(q.factors.G.cols() < q.factors.G.rows()))
+        {
+            continue;
+        }
+        ++inBodySpace;
+        const std::string what = "trial " + std::to_string(trial);
+        const Eigen::SparseMatrix<double> As(q.p.A.sparseView());
+        std::vector<rbd::boxedBlockPivoting::side> sidesB, sidesC;
+        Vec xB, xC;
+        const rbd::lcpResult rb = interior.solve
+        (
+            As, q.factors, q.p.b, q.lo, q.hi, sidesB, xB
+        );
+        const rbd::lcpResult rc = interior.solve
+        (
+            As, rbd::lcpFactors(), q.p.b, q.lo, q.hi, sidesC, xC
+        );
+        EXPECT_TRUE(rb.converged) << what << ": " << rb.maxViolation;
+        EXPECT_TRUE(rc.converged) << what << ": " << rc.maxViolation;
+        EXPECT_LE(rb.maxViolation, 1e-9) << what;
+        EXPECT_LE
+        (
+            (xB - xC).cwiseAbs().maxCoeff(),
+            1e-5*xC.cwiseAbs().maxCoeff() + 1e-15
+        ) << what;
+    }
+    EXPECT_GE(inBodySpace, 30);
+}
+
+
 TEST(boxedBlockPivoting, keepsFixedVariablesAtTheirBound)
 {
     // lo = hi (friction of a contact without normal force): x = lo, w free
