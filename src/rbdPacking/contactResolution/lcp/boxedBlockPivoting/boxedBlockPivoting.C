@@ -218,11 +218,11 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
     // each other, never a worse one (docs/restingSolveCost.md)
     auto solveNewton = [&](const Eigen::VectorXd& r)
     {
-        Eigen::VectorXd y(Eigen::VectorXd::Zero(n));
         if (body)
         {
             return Eigen::VectorXd(body->apply(r));
         }
+        Eigen::VectorXd y(Eigen::VectorXd::Zero(n));
         Eigen::VectorXd rm(members.size());
         for (size_t k = 0; k < members.size(); ++k)
         {
