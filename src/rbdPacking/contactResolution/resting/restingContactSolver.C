@@ -15,6 +15,7 @@ Foam::rbd::restingContactSolver::restingContactSolver
 (
     const dictionary& dict,
     const scalar compliance,
+    const scalar band,
     const bool coupled,
     const label frictionRounds
 )
@@ -24,7 +25,8 @@ Foam::rbd::restingContactSolver::restingContactSolver
     coupled_(coupled),
     coupledSolve_(frictionRounds),
     normalForces_(),
-    active_()
+    active_(),
+    band_(band)
 {}
 
 
@@ -204,6 +206,9 @@ Foam::rbd::restingContactSolver::solve
         }
     }
 
+    // The contacts' points recorded by the last solve
+    active_.match(bodies, contacts, band_);
+
     // Islands: contacts connected through bodies that move
     islands_.build(contacts, fixed, bodies.size());
     res.islands = islands_.size();
@@ -232,13 +237,13 @@ Foam::rbd::restingContactSolver::solve
     {
         normalPass(problem, s, Fext, tauExt, false, phiAll, res);
     }
-    active_.record(contacts, phiAll);
+    active_.record(bodies, contacts, phiAll);
 
     if (anyFriction)
     {
         frictionStage(problem, moved, Fext, tauExt, phiAll, res);
     }
-    active_.record(contacts, phiAll);
+    active_.record(bodies, contacts, phiAll);
 
     // Total: external + friction + normal (the friction is zero on a body
     // no contact moves)
@@ -278,6 +283,12 @@ void Foam::rbd::restingContactSolver::writeState(stateWriter& out) const
     {
         out.put(p.first).put(p.second);
     }
+    const warmStart::pointList& points = active_.points();
+    out.put(label(points.size()));
+    for (const warmStart::contactPoint& p : points)
+    {
+        out.put(p.key).put(p.body).put(p.local).put(p.active);
+    }
 }
 
 
@@ -292,7 +303,14 @@ void Foam::rbd::restingContactSolver::readState(stateReader& in)
         in.get(p.first).get(p.second);
     }
     std::sort(pairs.begin(), pairs.end());
-    active_.set(pairs);
+    in.get(n);
+    in.checkSize(n);
+    warmStart::pointList points(n);
+    for (warmStart::contactPoint& p : points)
+    {
+        in.get(p.key).get(p.body).get(p.local).get(p.active);
+    }
+    active_.set(pairs, points);
 }
 
 

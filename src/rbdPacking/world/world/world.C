@@ -61,7 +61,7 @@ Foam::rbd::world::world
     ),
     resting_
     (
-        controls.dict, controls.restingCompliance,
+        controls.dict, controls.restingCompliance, band_,
         controls.restingFriction == "coupled", controls.frictionRounds
     ),
     rolling_(material.rollingFriction, 0.5*shape.diameter()),

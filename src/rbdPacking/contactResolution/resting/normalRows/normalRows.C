@@ -134,13 +134,12 @@ void Foam::rbd::normalRows::solve
     }
 
     // The active set to start from: the contacts that carried a force
-    // in the previous solve (guess only: the solution does not depend
-    // on it)
+    // in the previous solve (warmStart: a guess)
     std::vector<bool>& guess = guess_;
     guess.assign(n, false);
     for (label a = 0; a < n; ++a)
     {
-        guess[a] = active.guess(contacts[cs[a]], B(a) < 0);
+        guess[a] = active.guess(cs[a], contacts[cs[a]], B(a) < 0);
     }
 
     phi.resize(n);

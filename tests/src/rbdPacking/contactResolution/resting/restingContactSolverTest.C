@@ -22,6 +22,9 @@ namespace
     const scalar g = 9.81;
     const scalar h = 1e-3;
 
+    //- Proximity band [m] (0.1 a, as the default proximity)
+    const scalar band = 0.1*a;
+
     //- The cylinder on the floor, touching it at n points of its rim at
     //  irregular angles (a mesh's vertices), each a hair above the floor:
     //  gaps of up to 1e-12 m, the round-off of a mesh transformed into
@@ -69,7 +72,8 @@ namespace
         {
             const restingContactSolver rs
             (
-                rbdTest::parseDict("lcpSolver " + solver + ";"), compliance
+                rbdTest::parseDict("lcpSolver " + solver + ";"), compliance,
+                band
             );
             List<vector> Fs(1, vector(0, 0, -m*g));
             List<vector> taus(1, Zero);
@@ -170,7 +174,7 @@ TEST(restingCompliance, leavesSphereContactsExact)
     c.p = point(0, 0, 0);
     c.centreBased = true;
     cs.append(c);
-    const restingContactSolver rs(rbdTest::parseDict(""), 1e-2);
+    const restingContactSolver rs(rbdTest::parseDict(""), 1e-2, band);
     List<vector> Fs(1, vector(0, 0, -m*g));
     List<vector> taus(1, Zero);
     rs.solve(bs, cs, boolList(1, false), h, Fs, taus);
@@ -233,7 +237,7 @@ namespace
 
             const restingContactSolver rs
             (
-                rbdTest::parseDict(""), 1e-5, coupled, rounds
+                rbdTest::parseDict(""), 1e-5, band, coupled, rounds
             );
             List<vector> Fs(1, vector(0, 0, -m*g));
             List<vector> taus(1, Zero);
