@@ -141,3 +141,31 @@ TEST(warmStart, theStateRoundTripsThroughEntriesAndPoints)
     EXPECT_TRUE(copy.guess(0, contacts[0], false));
     EXPECT_FALSE(copy.guess(1, contacts[1], true));
 }
+
+
+TEST(warmStart, aLaterPassOfTheSameSolveStartsFromEachContactsOwnAnswer)
+{
+    // The last step recorded two points of body 0 on the floor
+    List<rigidBody> bodies(1, body(point(0, 0, 0.005), 0));
+    List<contact> last(2);
+    last[0] = at(0, tubeBottom, point(0.004, 0, 0), bodies);
+    last[1] = at(0, tubeBottom, point(-0.004, 0, 0), bodies);
+    warmStart ws;
+    ws.record(bodies, last, scalarList({0.0, 0.0}));
+
+    // This step lists a new point first, then the two again
+    List<contact> contacts(3);
+    contacts[0] = at(0, tubeBottom, point(0, 0.004, 0), bodies);
+    contacts[1] = last[0];
+    contacts[2] = last[1];
+    ws.match(bodies, contacts, band);
+
+    // Pass 1 recorded its answer (only the new point carries a force);
+    // pass 2 (the staggered friction's) asks again without a new match:
+    // each contact gets its own state, not that of the point the last
+    // step's match pointed at
+    ws.record(bodies, contacts, scalarList({5.0, 0.0, 0.0}));
+    EXPECT_TRUE(ws.guess(0, contacts[0], false));
+    EXPECT_FALSE(ws.guess(1, contacts[1], true));
+    EXPECT_FALSE(ws.guess(2, contacts[2], true));
+}
