@@ -75,7 +75,6 @@ TEST(warmStart, aPointFartherThanTheReachTakesThePairFlag)
     List<rigidBody> bodies(1, body(point(0, 0, 0.005), 0));
     List<contact> contacts(1, at(0, tubeBottom, point(0.004, 0, 0), bodies));
     warmStart ws;
-    ws.record(bodies, contacts, scalarList({0.0}));
 
     // Another point of the same pair, beyond matchFraction band of the
     // recorded one, and one just within it
@@ -98,9 +97,11 @@ TEST(warmStart, aPointFartherThanTheReachTakesThePairFlag)
 
 TEST(warmStart, aPairListedTheOtherWayRoundMatchesThroughTheOtherBody)
 {
+    // Turned differently: the point on body 1 must be taken in body 1's
+    // frame
     List<rigidBody> bodies(2);
-    bodies[0] = body(point(0, 0, 0.005), 0);
-    bodies[1] = body(point(0, 0, 0.015), 0);
+    bodies[0] = body(point(0, 0, 0.005), 0.7);
+    bodies[1] = body(point(0, 0, 0.015), -0.4);
     List<contact> contacts(2);
     contacts[0] = at(1, 0, point(0.003, 0, 0.010), bodies);
     contacts[1] = at(1, 0, point(-0.003, 0, 0.010), bodies);
