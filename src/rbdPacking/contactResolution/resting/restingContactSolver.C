@@ -302,7 +302,6 @@ void Foam::rbd::restingContactSolver::readState(stateReader& in)
     {
         in.get(p.first).get(p.second);
     }
-    std::sort(pairs.begin(), pairs.end());
     in.get(n);
     in.checkSize(n);
     warmStart::pointList points(n);

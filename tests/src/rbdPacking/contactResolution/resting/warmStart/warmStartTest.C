@@ -41,6 +41,21 @@ namespace
         c.rk = k >= 0 ? p - bodies[k].x() : p;
         return c;
     }
+
+    //- Contacts of body 0 with the floor at the points ps
+    List<contact> onFloor
+    (
+        const UList<rigidBody>& bodies,
+        const std::initializer_list<point> ps
+    )
+    {
+        List<contact> cs;
+        for (const point& p : ps)
+        {
+            cs.append(at(0, tubeBottom, p, bodies));
+        }
+        return cs;
+    }
 }
 
 
@@ -48,18 +63,24 @@ TEST(warmStart, aContactTakesTheStateOfItsMaterialPointAfterTheBodyMoved)
 {
     // Two points of body 0 on the floor: one carried a force, one not
     List<rigidBody> bodies(1, body(point(0, 0, 0.005), 0));
-    List<contact> contacts(2);
-    contacts[0] = at(0, tubeBottom, point(0.004, 0, 0), bodies);
-    contacts[1] = at(0, tubeBottom, point(-0.004, 0, 0), bodies);
+    const List<contact> contacts
+    (
+        onFloor(bodies, {point(0.004, 0, 0), point(-0.004, 0, 0)})
+    );
     warmStart ws;
     ws.record(bodies, contacts, scalarList({2.0, 0.0}));
 
     // The body turned by 90 degrees and moved: the same material points
     // are found again, listed the other way round
     bodies[0] = body(point(0.001, 0.002, 0.005), 0.5*M_PI);
-    List<contact> next(2);
-    next[0] = at(0, tubeBottom, point(0.001, 0.002 - 0.004, 0), bodies);
-    next[1] = at(0, tubeBottom, point(0.001, 0.002 + 0.004, 0), bodies);
+    const List<contact> next
+    (
+        onFloor
+        (
+            bodies,
+            {point(0.001, 0.002 - 0.004, 0), point(0.001, 0.002 + 0.004, 0)}
+        )
+    );
     ws.match(bodies, next, band);
     EXPECT_FALSE(ws.guess(0, next[0], true));
     EXPECT_TRUE(ws.guess(1, next[1], false));
@@ -73,22 +94,27 @@ TEST(warmStart, aContactTakesTheStateOfItsMaterialPointAfterTheBodyMoved)
 TEST(warmStart, aPointFartherThanTheReachTakesThePairFlag)
 {
     List<rigidBody> bodies(1, body(point(0, 0, 0.005), 0));
-    List<contact> contacts(1, at(0, tubeBottom, point(0.004, 0, 0), bodies));
     warmStart ws;
 
     // Another point of the same pair, beyond matchFraction band of the
     // recorded one, and one just within it
     const scalar reach = warmStart::matchFraction*band;
-    List<contact> next(2);
-    next[0] = at(0, tubeBottom, point(0.004 - 1.5*reach, 0, 0), bodies);
-    next[1] = at(0, tubeBottom, point(0.004 - 0.5*reach, 0, 0), bodies);
+    const List<contact> next
+    (
+        onFloor
+        (
+            bodies,
+            {point(0.004 - 1.5*reach, 0, 0), point(0.004 - 0.5*reach, 0, 0)}
+        )
+    );
 
-    // Recorded inactive; the pair flag is inactive too, so make the pair
-    // active through a second, far point that carried a force
-    List<contact> both(2);
-    both[0] = contacts[0];
-    both[1] = at(0, tubeBottom, point(-0.004, 0, 0), bodies);
-    ws.record(bodies, both, scalarList({0.0, 1.0}));
+    // The point recorded inactive; the pair active through a second, far
+    // point that carried a force
+    ws.record
+    (
+        bodies, onFloor(bodies, {point(0.004, 0, 0), point(-0.004, 0, 0)}),
+        scalarList({0.0, 1.0})
+    );
     ws.match(bodies, next, band);
     EXPECT_TRUE(ws.guess(0, next[0], false));   // no point near: the pair
     EXPECT_FALSE(ws.guess(1, next[1], true));   // its point: inactive
@@ -121,9 +147,10 @@ TEST(warmStart, aPairListedTheOtherWayRoundMatchesThroughTheOtherBody)
 TEST(warmStart, theStateRoundTripsThroughEntriesAndPoints)
 {
     List<rigidBody> bodies(1, body(point(0, 0, 0.005), 0));
-    List<contact> contacts(2);
-    contacts[0] = at(0, tubeBottom, point(0.004, 0, 0), bodies);
-    contacts[1] = at(0, tubeBottom, point(-0.004, 0, 0), bodies);
+    const List<contact> contacts
+    (
+        onFloor(bodies, {point(0.004, 0, 0), point(-0.004, 0, 0)})
+    );
     warmStart ws;
     ws.record(bodies, contacts, scalarList({2.0, 0.0}));
 
@@ -148,17 +175,22 @@ TEST(warmStart, aLaterPassOfTheSameSolveStartsFromEachContactsOwnAnswer)
 {
     // The last step recorded two points of body 0 on the floor
     List<rigidBody> bodies(1, body(point(0, 0, 0.005), 0));
-    List<contact> last(2);
-    last[0] = at(0, tubeBottom, point(0.004, 0, 0), bodies);
-    last[1] = at(0, tubeBottom, point(-0.004, 0, 0), bodies);
     warmStart ws;
-    ws.record(bodies, last, scalarList({0.0, 0.0}));
+    ws.record
+    (
+        bodies, onFloor(bodies, {point(0.004, 0, 0), point(-0.004, 0, 0)}),
+        scalarList({0.0, 0.0})
+    );
 
     // This step lists a new point first, then the two again
-    List<contact> contacts(3);
-    contacts[0] = at(0, tubeBottom, point(0, 0.004, 0), bodies);
-    contacts[1] = last[0];
-    contacts[2] = last[1];
+    const List<contact> contacts
+    (
+        onFloor
+        (
+            bodies,
+            {point(0, 0.004, 0), point(0.004, 0, 0), point(-0.004, 0, 0)}
+        )
+    );
     ws.match(bodies, contacts, band);
 
     // Pass 1 recorded its answer (only the new point carries a force);
