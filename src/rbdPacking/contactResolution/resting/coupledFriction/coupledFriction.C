@@ -163,7 +163,12 @@ bool Foam::rbd::coupledFriction::solve
     Eigen::SparseMatrix<double> A;
     Eigen::VectorXd shift;
     lcpFactors factors;
-    assembly.assemble(bodies, contacts, fixed, dirs, A, shift, factors);
+    // In body space the boxed solve reads A's diagonal only
+    assembly.assemble
+    (
+        bodies, contacts, fixed, dirs, A, shift, factors,
+        lcpAssembly::entries::diagonalInBodySpace
+    );
     autoPtr<lcpBodySpace> body;
     if (lcpBodySpace::pays(A, factors))
     {

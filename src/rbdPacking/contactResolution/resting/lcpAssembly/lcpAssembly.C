@@ -30,7 +30,8 @@ void Foam::rbd::lcpAssembly::assemble
     const std::vector<constraint>& dirs,
     Eigen::SparseMatrix<double>& A,
     Eigen::VectorXd& shift,
-    lcpFactors& factors
+    lcpFactors& factors,
+    const entries which
 )
 {
     if (label(bodyRows_.size()) < bodies.size())
@@ -89,6 +90,97 @@ void Foam::rbd::lcpAssembly::assemble
         addRow(c.i, a, false);
         addRow(c.k, a, true);
     }
+    // Fewer body columns (6 per moving body) than rows: the factors
+    // pay (below)
+    const label d = 6*label(touched.size());
+    if (which == entries::diagonalInBodySpace && d < n)
+    {
+        diagonal(contacts, fixed, dirs, A);
+    }
+    else
+    {
+        offDiagonal(contacts, fixed, dirs, A);
+    }
+    for (const label body : touched)
+    {
+        bodyRows_[body].clear();
+    }
+
+    // The compliance of the mesh contacts (see the header): one
+    // solution where redundant contact points make A singular
+    shift.resize(n);
+    for (label a = 0; a < n; ++a)
+    {
+        shift(a) =
+            contacts[dirs[a].first].centreBased
+          ? 0
+          : compliance_*A.coeff(a, a);
+        A.coeffRef(a, a) += shift(a);
+    }
+
+    // A = G G^T + diag(shift), G = J W^1/2 (lcpFactors), where it has
+    // fewer columns than rows: a heap of mesh pellets, whose LCP the
+    // solver can then work on in body space
+    factors.G.resize(0, 0);
+    if (d < n)
+    {
+        bodyFactors(bodies, contacts, fixed, dirs, touched, factors);
+        factors.s = shift;
+    }
+}
+
+
+void Foam::rbd::lcpAssembly::diagonal
+(
+    const UList<contact>& contacts,
+    const boolList& fixed,
+    const std::vector<constraint>& dirs,
+    Eigen::SparseMatrix<double>& A
+) const
+{
+    // Each entry as offDiagonal sums it: the term of body i, then that
+    // of body k (0 + v = v exactly where one of them does not move)
+    const label n = dirs.size();
+    A.resize(n, n);
+    A.resizeNonZeros(n);
+    int* outer = A.outerIndexPtr();
+    int* inner = A.innerIndexPtr();
+    double* value = A.valuePtr();
+    for (label b = 0; b < n; ++b)
+    {
+        const contact& c = contacts[dirs[b].first];
+        scalar v = 0;
+        bool first = true;
+        for (const bool kSide : {false, true})
+        {
+            const label body = kSide ? c.k : c.i;
+            if (body < 0 || fixed[body])
+            {
+                continue;
+            }
+            const row& R = kSide ? rowsK_[b] : rowsI_[b];
+            const scalar t = (R.lin & R.wLin) + (R.ang & R.wAng);
+            v = first ? t : v + t;
+            first = false;
+        }
+        outer[b] = b;
+        inner[b] = b;
+        value[b] = v;
+    }
+    outer[n] = n;
+}
+
+
+void Foam::rbd::lcpAssembly::offDiagonal
+(
+    const UList<contact>& contacts,
+    const boolList& fixed,
+    const std::vector<constraint>& dirs,
+    Eigen::SparseMatrix<double>& A
+)
+{
+    const label n = dirs.size();
+
     // A column by column, into compressed storage: column b holds, for
     // each moving body of row b, the rows a on that body. An entry has
     // one term per body the two rows share, at most two, so its value does
@@ -155,83 +247,72 @@ void Foam::rbd::lcpAssembly::assemble
     }
     outer[n] = e;
     A.resizeNonZeros(e);
-    for (const label body : touched)
-    {
-        bodyRows_[body].clear();
-    }
+}
 
-    // The compliance of the mesh contacts (see the header): one
-    // solution where redundant contact points make A singular
-    shift.resize(n);
+
+void Foam::rbd::lcpAssembly::bodyFactors
+(
+    const UList<rigidBody>& bodies,
+    const UList<contact>& contacts,
+    const boolList& fixed,
+    const std::vector<constraint>& dirs,
+    const std::vector<label>& touched,
+    lcpFactors& factors
+)
+{
+    const label n = dirs.size();
+    const label d = 6*label(touched.size());
+    // Per body: its first column, and L with L L^T = I^-1 (world
+    // frame; zero for a body that does not rotate)
+    std::vector<Eigen::Matrix3d> sqrtInvInertia(touched.size());
+    for (size_t t = 0; t < touched.size(); ++t)
+    {
+        const rigidBody& bd = bodies[touched[t]];
+        bodyColumn_[touched[t]] = 6*label(t);
+        Eigen::Matrix3d W(Eigen::Matrix3d::Zero());
+        if (bd.rotates())
+        {
+            for (direction r = 0; r < 3; ++r)
+            {
+                for (direction c = 0; c < 3; ++c)
+                {
+                    W(r, c) = bd.invInertia()(r, c);
+                }
+            }
+            W = W.llt().matrixL();
+        }
+        sqrtInvInertia[t] = W;
+    }
+    gTriplets_.clear();
+    auto addG = [&](const label a, const label body, const row& R)
+    {
+        const label col = bodyColumn_[body];
+        const scalar sqrtInvMass = Foam::sqrt(bodies[body].invMass());
+        const Eigen::Vector3d g
+        (
+            sqrtInvInertia[col/6].transpose()
+           *Eigen::Vector3d(R.ang.x(), R.ang.y(), R.ang.z())
+        );
+        for (direction k = 0; k < 3; ++k)
+        {
+            gTriplets_.emplace_back(a, col + k, sqrtInvMass*R.lin[k]);
+            gTriplets_.emplace_back(a, col + 3 + k, g(k));
+        }
+    };
     for (label a = 0; a < n; ++a)
     {
-        shift(a) =
-            contacts[dirs[a].first].centreBased
-          ? 0
-          : compliance_*A.coeff(a, a);
-        A.coeffRef(a, a) += shift(a);
+        const contact& c = contacts[dirs[a].first];
+        addG(a, c.i, rowsI_[a]);
+        if (c.k >= 0 && !fixed[c.k])
+        {
+            addG(a, c.k, rowsK_[a]);
+        }
     }
-
-    // A = G G^T + diag(shift), G = J W^1/2 (lcpFactors), where it has
-    // fewer columns (6 per moving body) than rows: a heap of mesh
-    // pellets, whose LCP the solver can then work on in body space
-    const label d = 6*label(touched.size());
-    factors.G.resize(0, 0);
-    if (d < n)
+    factors.G.resize(n, d);
+    factors.G.setFromTriplets(gTriplets_.begin(), gTriplets_.end());
+    for (const label body : touched)
     {
-        // Per body: its first column, and L with L L^T = I^-1 (world
-        // frame; zero for a body that does not rotate)
-        std::vector<Eigen::Matrix3d> sqrtInvInertia(touched.size());
-        for (size_t t = 0; t < touched.size(); ++t)
-        {
-            const rigidBody& bd = bodies[touched[t]];
-            bodyColumn_[touched[t]] = 6*label(t);
-            Eigen::Matrix3d W(Eigen::Matrix3d::Zero());
-            if (bd.rotates())
-            {
-                for (direction r = 0; r < 3; ++r)
-                {
-                    for (direction c = 0; c < 3; ++c)
-                    {
-                        W(r, c) = bd.invInertia()(r, c);
-                    }
-                }
-                W = W.llt().matrixL();
-            }
-            sqrtInvInertia[t] = W;
-        }
-        gTriplets_.clear();
-        auto addG = [&](const label a, const label body, const row& R)
-        {
-            const label col = bodyColumn_[body];
-            const scalar sqrtInvMass = Foam::sqrt(bodies[body].invMass());
-            const Eigen::Vector3d g
-            (
-                sqrtInvInertia[col/6].transpose()
-               *Eigen::Vector3d(R.ang.x(), R.ang.y(), R.ang.z())
-            );
-            for (direction k = 0; k < 3; ++k)
-            {
-                gTriplets_.emplace_back(a, col + k, sqrtInvMass*R.lin[k]);
-                gTriplets_.emplace_back(a, col + 3 + k, g(k));
-            }
-        };
-        for (label a = 0; a < n; ++a)
-        {
-            const contact& c = contacts[dirs[a].first];
-            addG(a, c.i, rowsI_[a]);
-            if (c.k >= 0 && !fixed[c.k])
-            {
-                addG(a, c.k, rowsK_[a]);
-            }
-        }
-        factors.G.resize(n, d);
-        factors.G.setFromTriplets(gTriplets_.begin(), gTriplets_.end());
-        factors.s = shift;
-        for (const label body : touched)
-        {
-            bodyColumn_[body] = -1;
-        }
+        bodyColumn_[body] = -1;
     }
 }
 

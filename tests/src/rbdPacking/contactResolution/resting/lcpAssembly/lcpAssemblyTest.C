@@ -1,11 +1,14 @@
 // The island matrix of src/rbdPacking/contactResolution/resting/lcpAssembly
 // (eq 31): A = J M^-1 J^T against a dense product, the compliance on the
-// diagonal of material contact points, and the body-space factors
+// diagonal of material contact points, the body-space factors, and A as its
+// diagonal alone where a body-space solver needs no more
 
 #include <gtest/gtest.h>
 #include "lcpAssembly.H"
+#include "boxedBlockPivoting.H"
 #include "mathematicalConstants.H"
 #include <Eigen/Dense>
+#include <limits>
 #include <random>
 
 using namespace Foam;
@@ -193,4 +196,103 @@ TEST(lcpAssembly, factorsOfAHeapReproduceA)
     GGt.diagonal() += factors.s;
     const Eigen::MatrixXd Ad(A);
     EXPECT_LE((GGt - Ad).cwiseAbs().maxCoeff(), 1e-12*Ad.cwiseAbs().maxCoeff());
+}
+
+
+TEST(lcpAssembly, diagonalInBodySpaceIsTheSameDiagonalAndSolve)
+{
+    // Two turned bodies on the floor and on each other, eight material
+    // points per contact patch, a normal and two tangents each: 72 rows
+    // on 12 columns. entries::diagonalInBodySpace gives A's diagonal, the
+    // shift and the factors bit for bit as entries::all, nothing else of
+    // A, and the boxed solve in body space the same answer bit for bit
+    List<rigidBody> bodies(2);
+    bodies[0] = bodyAt(point(0, 0, r), quaternion(vector(1, -1, 2), 0.4));
+    bodies[1] = bodyAt(point(0, 0, 3*r), quaternion(vector(2, 1, 0), 0.3));
+    const boolList fixed(2, false);
+    List<contact> contacts;
+    std::vector<lcpAssembly::constraint> dirs;
+    for (label k = 0; k < 8; ++k)
+    {
+        const scalar phi = 2*constant::mathematical::pi*k/8;
+        const scalar x = r*std::cos(phi), y = r*std::sin(phi);
+        contacts.append
+        (
+            makeContact(0, tubeBottom, vector(0, 0, 1), point(x, y, 0), false)
+        );
+        contacts.append
+        (
+            makeContact(1, 0, vector(0.05, 0, 1), point(x, y, 2*r), false)
+        );
+    }
+    forAll(contacts, ci)
+    {
+        const vector& n = contacts[ci].n;
+        vector t(n ^ vector(0, 1, 0));
+        t /= mag(t);
+        dirs.emplace_back(ci, n);
+        dirs.emplace_back(ci, t);
+        dirs.emplace_back(ci, n ^ t);
+    }
+    const label n = dirs.size();
+
+    lcpAssembly assembly(0.01);
+    Eigen::SparseMatrix<double> A, Ad;
+    Eigen::VectorXd shift, shiftD;
+    lcpFactors factors, factorsD;
+    assembly.assemble(bodies, contacts, fixed, dirs, A, shift, factors);
+    assembly.assemble
+    (
+        bodies, contacts, fixed, dirs, Ad, shiftD, factorsD,
+        lcpAssembly::entries::diagonalInBodySpace
+    );
+
+    ASSERT_TRUE(factorsD.valid());
+    ASSERT_EQ(Ad.rows(), n);
+    ASSERT_EQ(Ad.cols(), n);
+    EXPECT_EQ(Ad.nonZeros(), n);
+    EXPECT_GT(A.nonZeros(), 4*n);
+    for (label a = 0; a < n; ++a)
+    {
+        EXPECT_EQ(Ad.coeff(a, a), A.coeff(a, a)) << "row " << a;
+        EXPECT_EQ(shiftD(a), shift(a)) << "row " << a;
+    }
+    EXPECT_EQ((Eigen::MatrixXd(factorsD.G) - Eigen::MatrixXd(factors.G))
+        .cwiseAbs().maxCoeff(), 0);
+    EXPECT_EQ((factorsD.s - factors.s).cwiseAbs().maxCoeff(), 0);
+
+    // The boxed problem of a coupled friction solve: normal rows >= 0
+    // pushed by gravity, tangent rows in a box, a tangential push
+    Eigen::VectorXd b(n), lo(n), hi(n);
+    const scalar inf = std::numeric_limits<scalar>::infinity();
+    for (label a = 0; a < n; ++a)
+    {
+        const bool normal = (a % 3 == 0);
+        b(a) = normal ? -9.81 : (a % 3 == 1 ? 0.7 : -0.2);
+        lo(a) = normal ? 0 : -0.02;
+        hi(a) = normal ? inf : 0.02;
+    }
+    const boxedBlockPivoting boxed;
+    std::vector<boxedBlockPivoting::side> sides(n), sidesD(n);
+    Eigen::VectorXd x(Eigen::VectorXd::Zero(n)), xD(x);
+    const lcpResult r = boxed.solve(A, factors, b, lo, hi, sides, x);
+    const lcpResult rD = boxed.solve(Ad, factorsD, b, lo, hi, sidesD, xD);
+    EXPECT_TRUE(r.converged);
+    EXPECT_EQ(rD.iterations, r.iterations);
+    EXPECT_EQ(rD.maxViolation, r.maxViolation);
+    EXPECT_EQ((xD - x).cwiseAbs().maxCoeff(), 0);
+    EXPECT_TRUE(sidesD == sides);
+
+    // Fewer rows than columns: no factors, and A whole whatever is asked
+    std::vector<lcpAssembly::constraint> few(dirs.begin(), dirs.begin() + 6);
+    Eigen::SparseMatrix<double> Af, Afd;
+    assembly.assemble(bodies, contacts, fixed, few, Af, shift, factors);
+    assembly.assemble
+    (
+        bodies, contacts, fixed, few, Afd, shiftD, factorsD,
+        lcpAssembly::entries::diagonalInBodySpace
+    );
+    EXPECT_FALSE(factorsD.valid());
+    EXPECT_EQ(Afd.nonZeros(), Af.nonZeros());
+    EXPECT_EQ((Afd - Af).norm(), 0);
 }
