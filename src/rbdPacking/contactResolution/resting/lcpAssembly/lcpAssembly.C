@@ -99,7 +99,7 @@ void Foam::rbd::lcpAssembly::assemble
     }
     else
     {
-        offDiagonal(contacts, fixed, dirs, A);
+        allEntries(contacts, fixed, dirs, A);
     }
     for (const label body : touched)
     {
@@ -138,7 +138,7 @@ void Foam::rbd::lcpAssembly::diagonal
     Eigen::SparseMatrix<double>& A
 ) const
 {
-    // Each entry as offDiagonal sums it: the term of body i, then that
+    // Each entry as allEntries sums it: the term of body i, then that
     // of body k (0 + v = v exactly where one of them does not move)
     const label n = dirs.size();
     A.resize(n, n);
@@ -171,7 +171,7 @@ void Foam::rbd::lcpAssembly::diagonal
 }
 
 
-void Foam::rbd::lcpAssembly::offDiagonal
+void Foam::rbd::lcpAssembly::allEntries
 (
     const UList<contact>& contacts,
     const boolList& fixed,
