@@ -6,6 +6,7 @@
 #include "stateIO.H"
 #include "midpointIntegrator.H"
 #include <algorithm>
+#include <omp.h>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -202,35 +203,42 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
     }
     neighbours_.update(x, 2*rb_ + band_);
 
-    // The narrow phase of the pairs: mesh pairs on the threads, each a
-    // contiguous run of the pairs into its own list, joined in the runs'
-    // order, so that the contact list (and the packing) is the same for
-    // any number of threads. Sphere pairs cost less than a thread's start.
+    // The narrow phase of the pairs: nonsphere pairs on the threads in
+    // chunks of pairsPerChunk, each chunk taken by the next thread free (a
+    // pair costs from one box test to hundreds of leaf pairs, so equal
+    // runs of pairs per thread can leave threads idle) and
+    // written to its own list; the lists are joined in the chunks' order,
+    // so the contact list (and the packing) is the same for any number of
+    // threads. Sphere pairs cost less than a thread's start.
     const UList<labelPair> pairs
     (
         withSleepers ? UList<labelPair>(neighbours_.pairs()) : activePairs()
     );
     const label nPairs = pairs.size();
+    const label nChunks = (nPairs + pairsPerChunk - 1)/pairsPerChunk;
     const label nThreads =
-        !dispatch_.spheres() ? min(controls_.threads, nPairs/2) : 1;
+        !dispatch_.spheres() ? min(controls_.threads, nChunks) : 1;
     if (nThreads > 1)
     {
-        threadContacts_.setSize(nThreads);
-        #pragma omp parallel for num_threads(nThreads) schedule(static, 1)
-        for (label t = 0; t < nThreads; ++t)
+        if (label(chunkContacts_.size()) < nChunks)
         {
-            DynamicList<contact>& found = threadContacts_[t];
+            chunkContacts_.resize(nChunks);
+        }
+        #pragma omp parallel for num_threads(nThreads) schedule(dynamic, 1)
+        for (label c = 0; c < nChunks; ++c)
+        {
+            const label t = omp_get_thread_num();
+            DynamicList<contact>& found = chunkContacts_[c];
             found.clear();
-            const label begin = (nPairs*t)/nThreads;
-            const label end = (nPairs*(t + 1))/nThreads;
-            for (label p = begin; p < end; ++p)
+            const label end = min(nPairs, (c + 1)*pairsPerChunk);
+            for (label p = c*pairsPerChunk; p < end; ++p)
             {
                 pelletPair(pairs[p], found, t);
             }
         }
-        for (const DynamicList<contact>& found : threadContacts_)
+        for (label c = 0; c < nChunks; ++c)
         {
-            contacts_.append(found);
+            contacts_.append(chunkContacts_[c]);
         }
     }
     else
