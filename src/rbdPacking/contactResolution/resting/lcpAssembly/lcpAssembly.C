@@ -92,8 +92,8 @@ void Foam::rbd::lcpAssembly::assemble
     }
     // Fewer body columns (6 per moving body) than rows: the factors
     // pay (below)
-    const label d = 6*label(touched.size());
-    if (which == entries::diagonalInBodySpace && d < n)
+    const bool factorsPay = 6*label(touched.size()) < n;
+    if (which == entries::diagonalInBodySpace && factorsPay)
     {
         diagonal(contacts, fixed, dirs, A);
     }
@@ -122,7 +122,7 @@ void Foam::rbd::lcpAssembly::assemble
     // fewer columns than rows: a heap of mesh pellets, whose LCP the
     // solver can then work on in body space
     factors.G.resize(0, 0);
-    if (d < n)
+    if (factorsPay)
     {
         bodyFactors(bodies, contacts, fixed, dirs, touched, factors);
         factors.s = shift;
@@ -139,7 +139,7 @@ void Foam::rbd::lcpAssembly::diagonal
 ) const
 {
     // Each entry as allEntries sums it: the term of body i, then that
-    // of body k (0 + v = v exactly where one of them does not move)
+    // of body k (from 0: 0 + t = t exactly, so the same bits)
     const label n = dirs.size();
     A.resize(n, n);
     A.resizeNonZeros(n);
@@ -150,7 +150,6 @@ void Foam::rbd::lcpAssembly::diagonal
     {
         const contact& c = contacts[dirs[b].first];
         scalar v = 0;
-        bool first = true;
         for (const bool kSide : {false, true})
         {
             const label body = kSide ? c.k : c.i;
@@ -159,9 +158,7 @@ void Foam::rbd::lcpAssembly::diagonal
                 continue;
             }
             const row& R = kSide ? rowsK_[b] : rowsI_[b];
-            const scalar t = (R.lin & R.wLin) + (R.ang & R.wAng);
-            v = first ? t : v + t;
-            first = false;
+            v += (R.lin & R.wLin) + (R.ang & R.wAng);
         }
         outer[b] = b;
         inner[b] = b;
