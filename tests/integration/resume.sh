@@ -2,8 +2,8 @@
 #------------------------------------------------------------------------------
 # rbdPackBed -resume: a run stopped at endTime leaves a checkpoint, and the
 # run resumed from it with a larger endTime gives the packing of the run
-# that never stopped, bit for bit (spheres, and cylinders on meshes with
-# the coupled friction solve); a settled run removes its checkpoint; the
+# that never stopped, bit for bit (spheres, and cylinders on meshes and as
+# exact solids with the coupled friction solve); a settled run removes its checkpoint; the
 # wall-clock interval writes checkpoints while running. Refused: -resume
 # without a checkpoint, with an endTime not beyond the checkpoint's time,
 # with a dictionary that packs differently, with a
@@ -75,8 +75,9 @@ cp -r "$here/cases/smallSpheres" "$tmp/offGrid-full"
 cp -r "$here/cases/smallSpheres" "$tmp/offGrid-split"
 resumeCase offGrid 0.71 0.725
 
-# Cylinders on 80-face meshes, coupled resting friction
-for c in cylinders-full cylinders-split
+# Cylinders on 80-face meshes (contactModel mesh), and as exact solids
+# (auto: prismContacts, rolling resistance), coupled resting friction
+for c in cylinders-full cylinders-split exactCylinders-full exactCylinders-split
 do
     cp -r "$here/cases/smallSpheres" "$tmp/$c"
     d="$tmp/$c/system/packingDict"
@@ -84,10 +85,14 @@ do
     foamDictionary "$d" -entry pellets/height -set 0.01 >/dev/null
     foamDictionary "$d" -entry pellets/number -set 8 >/dev/null
     foamDictionary "$d" -entry simulation/endTime -set 8 >/dev/null
+    case "$c" in
+        cylinders-*) foamDictionary "$d" -entry simulation/contactModel -set mesh >/dev/null ;;
+    esac
 done
-# Stopped while they settle (all released by 0.5 s; settled at 1.175 s
-# when this was written, 2026-11-26)
+# Stopped while they settle (all released by 0.5 s; the meshes settled at
+# 1.175 s when this was written, 2026-11-26)
 resumeCase cylinders 0.6
+resumeCase exactCylinders 0.6
 
 # Checkpoints by the wall clock while the run goes on
 cp -r "$here/cases/smallSpheres" "$tmp/often"

@@ -50,6 +50,19 @@ bool Foam::rbd::prismProfile::arc::fullCircle() const
 }
 
 
+bool Foam::rbd::prismProfile::hasConcaveArc() const
+{
+    for (const arc& a : arcs_)
+    {
+        if (a.sense < 0)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 bool Foam::rbd::prismProfile::arc::within(const vector2D& d) const
 {
     if (fullCircle())

@@ -801,6 +801,28 @@ TEST(prismProfile, exposedArcsOfTheShapes)
 }
 
 
+TEST(prismProfile, concaveArcsAreTheBoresAndHoles)
+{
+    // A ring's bore and the holes are concave arcs; the lobes meet at
+    // corners (cusps), not on concave arcs. contactModel auto packs the
+    // profiles without concave arcs as exact solids (contactDispatch)
+    for (const prismCase& c : cases())
+    {
+        const autoPtr<prismProfile> p(c.profile());
+        bool concave = false;
+        for (const prismProfile::arc& a : p->arcs())
+        {
+            concave = concave || a.sense < 0;
+        }
+        EXPECT_EQ(p->hasConcaveArc(), concave) << c.name;
+        const bool bored =
+            c.name == "ring" || c.name == "cylinderWithHoles"
+         || c.name == "twoDiscsAndHoles";
+        EXPECT_EQ(p->hasConcaveArc(), bored) << c.name;
+    }
+}
+
+
 TEST(prismProfile, shapesPlaceTheirProfileWhereTheirMeshIs)
 {
     // The mesh's vertices lie on the true surface (an inscribed mesh):
