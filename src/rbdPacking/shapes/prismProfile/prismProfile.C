@@ -50,19 +50,6 @@ bool Foam::rbd::prismProfile::arc::fullCircle() const
 }
 
 
-bool Foam::rbd::prismProfile::hasConcaveArc() const
-{
-    for (const arc& a : arcs_)
-    {
-        if (a.sense < 0)
-        {
-            return true;
-        }
-    }
-    return false;
-}
-
-
 bool Foam::rbd::prismProfile::arc::within(const vector2D& d) const
 {
     if (fullCircle())
@@ -280,6 +267,19 @@ void Foam::rbd::prismProfile::setFrame(const tensor& Q, const vector& t)
             max(boundingRadius_, Foam::sqrt(sqr(farthest(a, o2)) + sqr(dz)));
         outerRadius_ = max(outerRadius_, farthest(a, vector2D::zero));
     }
+}
+
+
+bool Foam::rbd::prismProfile::hasConcaveArc() const
+{
+    for (const arc& a : arcs_)
+    {
+        if (a.sense < 0)
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 
