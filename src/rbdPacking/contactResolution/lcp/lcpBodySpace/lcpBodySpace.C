@@ -16,6 +16,9 @@ Foam::rbd::lcpBodySpace::lcpBodySpace(const lcpFactors& factors)
     Gt_.makeCompressed();
     const label d = Gt_.rows();
     const label n = Gt_.cols();
+
+    // The pattern of K (lower triangle, diagonal included), each stored
+    // value numbered: value v of K holds v + 1
     const sparseMatrix GtG(Gt_*factors_.G);
     std::vector<Eigen::Triplet<double>> pattern;
     for (label j = 0; j < d; ++j)
@@ -29,25 +32,53 @@ Foam::rbd::lcpBodySpace::lcpBodySpace(const lcpFactors& factors)
             }
         }
     }
-    K_.resize(d, d);
-    K_.setFromTriplets(pattern.begin(), pattern.end());
-    K_.makeCompressed();
+    sparseMatrix K(d, d);
+    K.setFromTriplets(pattern.begin(), pattern.end());
+    K.makeCompressed();
+    for (label v = 0; v < label(K.nonZeros()); ++v)
+    {
+        K.valuePtr()[v] = v + 1;
+    }
 
-    // Slot of (row, col) in K's compressed columns
-    const int* outer = K_.outerIndexPtr();
-    const int* inner = K_.innerIndexPtr();
+    // AMD ordering of K's full pattern and the permuted upper triangle,
+    // made as SimplicialLDLT<AMDOrdering> makes them (ordering(),
+    // factorize()): the same ordering, the same storage order of the
+    // entries, so the factorisation below does the same arithmetic
+    {
+        sparseMatrix C;
+        C = K.selfadjointView<Eigen::Lower>();
+        Eigen::AMDOrdering<int> amd;
+        amd(C, Pinv_);
+    }
+    P_ = Pinv_.inverse();
+    Kp_.resize(d, d);
+    Kp_.selfadjointView<Eigen::Upper>() =
+        K.selfadjointView<Eigen::Lower>().twistedBy(P_);
+
+    // Where each value of K went in Kp_
+    std::vector<label> toKp(K.nonZeros(), -1);
+    for (label v = 0; v < label(Kp_.nonZeros()); ++v)
+    {
+        toKp[label(Kp_.valuePtr()[v]) - 1] = v;
+    }
+
+    // Slot of (row, col) of K (lower: row >= col) in Kp_
+    const int* outer = K.outerIndexPtr();
+    const int* inner = K.innerIndexPtr();
     auto slot = [&](const label row, const label col)
     {
-        return label
-        (
+        return toKp
+        [
             std::lower_bound(inner + outer[col], inner + outer[col + 1], row)
           - inner
-        );
+        ];
     };
     for (label j = 0; j < d; ++j)
     {
         diagonalSlots_.push_back(slot(j, j));
     }
+    // Column a of G^T is sorted by row: p >= q in storage is row p >=
+    // row q
     slotStart_.assign(n + 1, 0);
     const int* gOuter = Gt_.outerIndexPtr();
     const int* gInner = Gt_.innerIndexPtr();
@@ -56,18 +87,14 @@ Foam::rbd::lcpBodySpace::lcpBodySpace(const lcpFactors& factors)
         slotStart_[a] = slots_.size();
         for (label p = gOuter[a]; p < gOuter[a + 1]; ++p)
         {
-            for (label q = gOuter[a]; q < gOuter[a + 1]; ++q)
+            for (label q = gOuter[a]; q <= p; ++q)
             {
-                if (gInner[p] >= gInner[q])
-                {
-                    slots_.push_back(slot(gInner[p], gInner[q]));
-                    pairs_.emplace_back(p, q);
-                }
+                slots_.push_back(slot(gInner[p], gInner[q]));
             }
         }
     }
     slotStart_[n] = slots_.size();
-    ldlt_.analyzePattern(K_);
+    ldlt_.analyzePattern(Kp_);
 }
 
 
@@ -90,7 +117,12 @@ Eigen::VectorXd Foam::rbd::lcpBodySpace::product
     const Eigen::VectorXd& x
 ) const
 {
-    return factors_.G*Eigen::VectorXd(Gt_*x) + factors_.s.cwiseProduct(x);
+    // Both products as gathers, one dot product per entry (row a of G is
+    // column a of G^T, column j of G its row j): the same terms in the
+    // same order as the scatters of the column-major products, fewer
+    // stores
+    const Eigen::VectorXd y(factors_.G.transpose()*x);
+    return Gt_.transpose()*y + factors_.s.cwiseProduct(x);
 }
 
 
@@ -101,13 +133,15 @@ bool Foam::rbd::lcpBodySpace::factorise(const Eigen::VectorXd& Einv)
     {
         return false;
     }
-    double* k = K_.valuePtr();
-    std::fill(k, k + K_.nonZeros(), 0.0);
+    double* k = Kp_.valuePtr();
+    std::fill(k, k + Kp_.nonZeros(), 0.0);
     for (const label slot : diagonalSlots_)
     {
         k[slot] = 1;
     }
     const double* g = Gt_.valuePtr();
+    const int* gOuter = Gt_.outerIndexPtr();
+    const label* slot = slots_.data();
     for (label a = 0; a + 1 < label(slotStart_.size()); ++a)
     {
         const double e = Einv_(a);
@@ -115,12 +149,17 @@ bool Foam::rbd::lcpBodySpace::factorise(const Eigen::VectorXd& Einv)
         {
             continue;
         }
-        for (label i = slotStart_[a]; i < slotStart_[a + 1]; ++i)
+        const label* s = slot + slotStart_[a];
+        for (label p = gOuter[a]; p < gOuter[a + 1]; ++p)
         {
-            k[slots_[i]] += e*g[pairs_[i].first]*g[pairs_[i].second];
+            const double eg = e*g[p];
+            for (label q = gOuter[a]; q <= p; ++q)
+            {
+                k[*s++] += eg*g[q];
+            }
         }
     }
-    ldlt_.factorize(K_);
+    ldlt_.factorize(Kp_);
     return ldlt_.info() == Eigen::Success;
 }
 
@@ -128,8 +167,10 @@ bool Foam::rbd::lcpBodySpace::factorise(const Eigen::VectorXd& Einv)
 Eigen::VectorXd Foam::rbd::lcpBodySpace::apply(const Eigen::VectorXd& r) const
 {
     const Eigen::VectorXd Er(Einv_.cwiseProduct(r));
-    const Eigen::VectorXd y(ldlt_.solve(Gt_*Er));
-    return Er - Einv_.cwiseProduct(factors_.G*y);
+    // As SimplicialLDLT<AMDOrdering>::solve: ordered, solved, ordered back
+    const Eigen::VectorXd rp(P_*(factors_.G.transpose()*Er));
+    const Eigen::VectorXd y(Pinv_*ldlt_.solve(rp));
+    return Er - Einv_.cwiseProduct(Gt_.transpose()*y);
 }
 
 

@@ -278,6 +278,105 @@ TEST(lcpBodySpace, applySolvesTheActiveRowsShiftedByEps)
 }
 
 
+TEST(lcpBodySpace, storesKOrderedAndFactorisesItAsEigensAMDLDLTDoes)
+{
+    // lcpBodySpace keeps K = I + G^T E^-1 G already in its AMD ordering and
+    // factorises it in place; the reference here is the plain form: K
+    // summed row by row in natural order, factorised by Eigen's
+    // SimplicialLDLT<AMDOrdering> (which orders it at each factorisation),
+    // and column-major products. Its header promises the same factors:
+    // the answers must agree to the bit, so the packings do too
+    typedef Eigen::SparseMatrix<double> sparseMatrix;
+    for (const unsigned seed : {7u, 8u, 9u})
+    {
+        const label n = 60;
+        const problem P(makeProblem(7, n, seed, seed == 8));
+        const sparseMatrix& G = P.factors.G;
+        const sparseMatrix Gt(G.transpose());
+        const label d = G.cols();
+        rbd::lcpBodySpace B(P.factors);
+
+        std::mt19937 gen(seed);
+        std::uniform_real_distribution<double> U01(0, 1);
+        std::normal_distribution<double> N(0, 1);
+        for (const double share : {1.0, 0.5})
+        {
+            Vec Einv(Vec::Zero(n));
+            for (label a = 0; a < n; ++a)
+            {
+                if (U01(gen) < share)
+                {
+                    Einv(a) = 1/(P.s(a) + 1e-3*P.A(a, a));
+                }
+            }
+
+            // K by rows in natural order: (e g_p) g_q added per row a
+            Mat K(Mat::Identity(d, d));
+            for (label a = 0; a < n; ++a)
+            {
+                if (Einv(a) == 0) continue;
+                for (sparseMatrix::InnerIterator p(Gt, a); p; ++p)
+                {
+                    const double eg = Einv(a)*p.value();
+                    for (sparseMatrix::InnerIterator q(Gt, a); q; ++q)
+                    {
+                        if (q.row() <= p.row())
+                        {
+                            K(p.row(), q.row()) += eg*q.value();
+                        }
+                    }
+                }
+            }
+            // Its pattern: I plus every (p, q) that some row couples
+            std::vector<Eigen::Triplet<double>> t;
+            for (label j = 0; j < d; ++j)
+            {
+                for (label i = j; i < d; ++i)
+                {
+                    bool coupled = i == j;
+                    for (label a = 0; a < n && !coupled; ++a)
+                    {
+                        coupled = Gt.coeff(i, a) != 0 && Gt.coeff(j, a) != 0;
+                    }
+                    if (coupled) t.emplace_back(i, j, K(i, j));
+                }
+            }
+            sparseMatrix Kl(d, d);
+            Kl.setFromTriplets(t.begin(), t.end());
+            Kl.makeCompressed();
+            Eigen::SimplicialLDLT
+            <
+                sparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>
+            > ref(Kl);
+            ASSERT_EQ(ref.info(), Eigen::Success);
+
+            ASSERT_TRUE(B.factorise(Einv));
+            for (label k = 0; k < 3; ++k)
+            {
+                Vec r(n);
+                for (label i = 0; i < n; ++i) r(i) = N(gen);
+                const Vec Er(Einv.cwiseProduct(r));
+                const Vec y(ref.solve(Vec(Gt*Er)));
+                const Vec expected(Er - Einv.cwiseProduct(Vec(G*y)));
+                const Vec x(B.apply(r));
+                for (label a = 0; a < n; ++a)
+                {
+                    ASSERT_EQ(x(a), expected(a))
+                        << "seed " << seed << ", share " << share
+                        << ", row " << a;
+                }
+                const Vec Ax(B.product(r));
+                const Vec Aref(G*Vec(Gt*r) + P.s.cwiseProduct(r));
+                for (label a = 0; a < n; ++a)
+                {
+                    ASSERT_EQ(Ax(a), Aref(a)) << "product, row " << a;
+                }
+            }
+        }
+    }
+}
+
+
 TEST(lcpBodySpace, noActiveRowGivesZeroAndNonFiniteIsRefused)
 {
     const problem P(makeProblem(3, 30, 7, true));
