@@ -6,6 +6,41 @@
 
 #include <algorithm>
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+    //- M^T v for a column-major M: one dot product per column, summed in
+    //  the order of the column's entries, as a column-major M^T v scatters
+    //  them (the same sums bit for bit, fewer stores). By hand: Eigen runs
+    //  the same product (a row-major one) on all OpenMP threads above 20
+    //  000 nonzeros, whatever simulation/threads says
+    Eigen::VectorXd columnDots
+    (
+        const Eigen::SparseMatrix<double>& M,
+        const Eigen::VectorXd& v
+    )
+    {
+        const Foam::label nCols = M.cols();
+        Eigen::VectorXd r(nCols);
+        const int* outer = M.outerIndexPtr();
+        const int* inner = M.innerIndexPtr();
+        const double* value = M.valuePtr();
+        const double* x = v.data();
+        for (Foam::label j = 0; j < nCols; ++j)
+        {
+            double t = 0;
+            for (int p = outer[j]; p < outer[j + 1]; ++p)
+            {
+                t += value[p]*x[inner[p]];
+            }
+            r(j) = t;
+        }
+        return r;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::lcpBodySpace::lcpBodySpace(const lcpFactors& factors)
@@ -117,12 +152,10 @@ Eigen::VectorXd Foam::rbd::lcpBodySpace::product
     const Eigen::VectorXd& x
 ) const
 {
-    // Both products as gathers, one dot product per entry (row a of G is
-    // column a of G^T, column j of G its row j): the same terms in the
-    // same order as the scatters of the column-major products, fewer
-    // stores
-    const Eigen::VectorXd y(factors_.G.transpose()*x);
-    return Gt_.transpose()*y + factors_.s.cwiseProduct(x);
+    // G^T x: the columns of G; G y: the columns of G^T (rows of G)
+    return
+        columnDots(Gt_, columnDots(factors_.G, x))
+      + factors_.s.cwiseProduct(x);
 }
 
 
@@ -168,9 +201,9 @@ Eigen::VectorXd Foam::rbd::lcpBodySpace::apply(const Eigen::VectorXd& r) const
 {
     const Eigen::VectorXd Er(Einv_.cwiseProduct(r));
     // As SimplicialLDLT<AMDOrdering>::solve: ordered, solved, ordered back
-    const Eigen::VectorXd rp(P_*(factors_.G.transpose()*Er));
+    const Eigen::VectorXd rp(P_*columnDots(factors_.G, Er));
     const Eigen::VectorXd y(Pinv_*ldlt_.solve(rp));
-    return Er - Einv_.cwiseProduct(Gt_.transpose()*y);
+    return Er - Einv_.cwiseProduct(columnDots(Gt_, y));
 }
 
 
