@@ -8,6 +8,11 @@
 #include <algorithm>
 #include <omp.h>
 
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#include <Eigen/Core>
+#pragma GCC diagnostic pop
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rbd::world::world
@@ -73,6 +78,13 @@ Foam::rbd::world::world
     stats_(),
     tinySteps_(0)
 {
+    // Eigen, built with OpenMP, runs its larger products (row-major
+    // sparse times dense above 20 000 nonzeros, dense GEMM) on all OpenMP
+    // threads unless told: held to simulation/threads, so that threads 1
+    // runs on one core (its splits keep each entry's sum in one thread:
+    // the same answers on any number)
+    Eigen::setNbThreads(controls.threads);
+
     Info<< "Narrow phase (contactModel " << controls.contactModel << "): ";
     dispatch_.describe(Info);
     if (!dispatch_.spheres())
