@@ -81,8 +81,8 @@ Foam::rbd::world::world
     // Eigen, built with OpenMP, runs its larger products (row-major
     // sparse times dense above 20 000 nonzeros, dense GEMM) on all OpenMP
     // threads unless told: held to simulation/threads, so that threads 1
-    // runs on one core (its splits keep each entry's sum in one thread:
-    // the same answers on any number)
+    // runs on one core. (No product in src/ is of those kinds today:
+    // lcpBodySpace writes its gathers out)
     Eigen::setNbThreads(controls.threads);
 
     Info<< "Narrow phase (contactModel " << controls.contactModel << "): ";

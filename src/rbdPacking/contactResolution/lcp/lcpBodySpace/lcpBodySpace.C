@@ -12,9 +12,11 @@ namespace
 {
     //- M^T v for a column-major M: one dot product per column, summed in
     //  the order of the column's entries, as a column-major M^T v scatters
-    //  them (the same sums bit for bit, fewer stores). By hand: Eigen runs
-    //  the same product (a row-major one) on all OpenMP threads above 20
-    //  000 nonzeros, whatever simulation/threads says
+    //  them (the same sums bit for bit, fewer stores). By hand, serial:
+    //  Eigen's M.transpose()*v (a row-major product) spreads itself over
+    //  Eigen::nbThreads() threads above 20 000 nonzeros, inside a solve
+    //  that is otherwise serial; what that would cost or save was not
+    //  measured
     Eigen::VectorXd columnDots
     (
         const Eigen::SparseMatrix<double>& M,
@@ -174,7 +176,6 @@ bool Foam::rbd::lcpBodySpace::factorise(const Eigen::VectorXd& Einv)
     }
     const double* g = Gt_.valuePtr();
     const int* gOuter = Gt_.outerIndexPtr();
-    const label* slot = slots_.data();
     for (label a = 0; a + 1 < label(slotStart_.size()); ++a)
     {
         const double e = Einv_(a);
@@ -182,7 +183,7 @@ bool Foam::rbd::lcpBodySpace::factorise(const Eigen::VectorXd& Einv)
         {
             continue;
         }
-        const label* s = slot + slotStart_[a];
+        const label* s = slots_.data() + slotStart_[a];
         for (label p = gOuter[a]; p < gOuter[a + 1]; ++p)
         {
             const double eg = e*g[p];
