@@ -121,6 +121,35 @@ PY
                   printf "$z$z$z"; for v in $tri; do printf "$v"; done
                   printf '\x00\x00'
               done; } > "$stl" ;;
+    placement)
+            # scheme placement from constant/placement.csv: 'none' (no
+            # file), 'header' (a wrong header), 'overlap' (two spheres
+            # 2 mm into each other), 'outside' (a centre beyond the wall),
+            # 'shape' (a cylinder in a sphere run), 'quaternion' (not of
+            # unit length), 'count' (3 pellets, number 20), 'above' (a
+            # sphere through the top of the container)
+            foamDictionary "$dict" -entry loading -set \
+                '{ scheme placement; file "constant/placement.csv"; }' \
+                >/dev/null 2>&1
+            [ "$2" = count ] \
+                || foamDictionary "$dict" -entry pellets/number -remove >/dev/null 2>&1
+            mkdir -p "$tmp/case/constant"
+            csv="$tmp/case/constant/placement.csv"
+            {
+                [ "$2" = header ] && echo 'id,x,y,z,qw,qx,qy,qz' \
+                    || echo 'id,shape,x,y,z,qw,qx,qy,qz'
+                echo '0,sphere,0,0,0.006,1,0,0,0'
+                case "$2" in
+                    overlap)    echo '1,sphere,0.001,0,0.0141,1,0,0,0' ;;
+                    outside)    echo '1,sphere,0.021,0,0.02,1,0,0,0' ;;
+                    shape)      echo '1,cylinder,0,0,0.02,1,0,0,0' ;;
+                    quaternion) echo '1,sphere,0,0,0.02,1,0.5,0,0' ;;
+                    above)      echo '1,sphere,0,0,0.097,1,0,0,0' ;;
+                    *)          echo '1,sphere,0,0,0.02,1,0,0,0' ;;
+                esac
+                echo '2,sphere,0.012,0,0.02,1,0,0,0'
+            } > "$csv"
+            [ "$2" = none ] && rm "$csv" ;;
     *)      echo "unknown action '$1'"; exit 2 ;;
 esac
 

@@ -278,7 +278,43 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     epsEstimate_ = epsEstimate;
     const bool hasNumber = pelletsDict.found("number");
     const bool hasFill = pelletsDict.found("fillHeight");
-    if (hasNumber == hasFill)
+    if (loading_->placed())
+    {
+        // The file's pellets are the bed: 'number', if given, says how
+        // many the user expects there
+        const placementFile& placement = loading_->placement();
+        const string fileText
+        (
+            "loading/file " + placement.file() + ": "
+          + Foam::name(placement.size()) + " pellets"
+        );
+        if (hasFill)
+        {
+            badEntry
+            (
+                pelletsDict, "fillHeight",
+                pelletsDict.get<scalar>("fillHeight"),
+                "no fillHeight with loading/scheme placement: the bed is "
+                "the pellets of " + fileText + " (give 'number "
+              + Foam::name(placement.size()) + ";' or nothing)"
+            );
+        }
+        number_ = placement.size();
+        if (hasNumber)
+        {
+            const label n = getPositiveLabel(pelletsDict, "number");
+            if (n != number_)
+            {
+                badEntry
+                (
+                    pelletsDict, "number", n,
+                    "the number of pellets in " + fileText + " (or no "
+                    "number: the file's count is used)"
+                );
+            }
+        }
+    }
+    else if (hasNumber == hasFill)
     {
         FatalIOErrorInFunction(pelletsDict)
             << "Give exactly one of 'number' (pellets [-]) and 'fillHeight' "
@@ -286,7 +322,9 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
             << exit(FatalIOError);
     }
     const scalar release = loading_->releaseHeight() - rb;
-    if (hasNumber)
+    if (loading_->placed())
+    {}
+    else if (hasNumber)
     {
         number_ = getPositiveLabel(pelletsDict, "number");
     }
@@ -313,7 +351,10 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
         );
     }
 
-    checkFilling(containerDict, loadingDict, epsEstimate);
+    if (!loading_->placed())
+    {
+        checkFilling(containerDict, loadingDict, epsEstimate);
+    }
 
     // Safety net that fits the loading (the default 30 s stopped a bed of
     // 1000 spheres in one column with 606 released)
@@ -419,6 +460,11 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     checkCfdGrid(dict);
     checkOutputDirectories();
 
+    if (loading_->placed())
+    {
+        checkPlacement(loadingDict);
+    }
+
     world_.reset
     (
         new world(tube_, shape, material_, rotates_, controls_)
@@ -455,6 +501,27 @@ Foam::scalar Foam::rbd::packedBed::endTimeForLoading
 
 void Foam::rbd::packedBed::releasePellets()
 {
+    if (loading_->placed())
+    {
+        // Every pellet at once, at rest, where the file says (checked in
+        // the constructor: within the tube, and clear of one another to
+        // the touching gap, whose interpenetration is recorded)
+        if (state_.released == 0)
+        {
+            const placementFile& placement = loading_->placement();
+            for (label i = 0; i < placement.size(); ++i)
+            {
+                world_->addBody(placement.x(i), placement.q(i));
+            }
+            state_.released = placement.size();
+            state_.releaseOverlap = max
+            (
+                state_.releaseOverlap, world_->currentMaxOverlap()
+            );
+        }
+        return;
+    }
+
     const UList<rigidBody>& bodies = world_->bodies();
     const scalar clearance = loading_->clearance();
     const scalar rb = shape_->boundingRadius();
@@ -880,6 +947,62 @@ void Foam::rbd::packedBed::checkFilling
           + " m; or a taller container)"
         );
     }
+}
+
+
+Foam::scalar Foam::rbd::packedBed::checkPlacement
+(
+    const dictionary& loadingDict
+) const
+{
+    const placementFile& placement = loading_->placement();
+    const pelletShape& shape = shape_();
+
+    // A world of the placement alone: its contacts with every body (none
+    // asleep) are the narrow phase's exact gaps. Its constructor's echo of
+    // the narrow phase is the run's world's to write (once in the log)
+    const int infoLevel = messageStream::level;
+    messageStream::level = 0;
+    world trial(tube_, shape, material_, rotates_, controls_);
+    messageStream::level = infoLevel;
+    for (label i = 0; i < placement.size(); ++i)
+    {
+        trial.addBody(placement.x(i), placement.q(i));
+    }
+    const contact* worst = nullptr;
+    for (const contact& c : trial.allContacts())
+    {
+        if (!worst || c.gap < worst->gap)
+        {
+            worst = &c;
+        }
+    }
+    const scalar slop = controls_.contactTolerance*shape.diameter();
+    if (worst && worst->gap < -slop)
+    {
+        const auto pelletText = [&](const label i)
+        {
+            return
+                "pellet " + Foam::name(i) + " (line "
+              + Foam::name(placement.line(i)) + ")";
+        };
+        const string other
+        (
+            worst->k >= 0 ? pelletText(worst->k)
+          : worst->k == tubeWall ? string("the tube wall")
+          : string("the floor")
+        );
+        badEntry
+        (
+            loadingDict, "file", placement.file(),
+            "poses of pellets clear of one another, the wall and the floor"
+            " (" + placement.path() + ": " + pelletText(worst->i)
+          + " overlaps " + other + " by " + Foam::name(-worst->gap)
+          + " m, more than the touching gap contactTolerance dp = "
+          + Foam::name(slop) + " m; the deepest overlap of the file)"
+        );
+    }
+    return worst ? max(0 - worst->gap, scalar(0)) : 0;
 }
 
 
@@ -1608,6 +1731,7 @@ void Foam::rbd::packedBed::write() const
     summary.add("maxOverlap", w.stats().maxOverlap);
     summary.add("finalMaxOverlap", finalOverlap_);
     summary.add("releaseOverlap", state_.releaseOverlap);
+    summary.add("loadingScheme", loading_->scheme());
     summary.add("simulatedTime", w.time());
     summary.add("wallTime", wallTime_);
     summary.add("cpuTime", cpuTime_);

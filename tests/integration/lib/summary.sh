@@ -15,4 +15,19 @@ releaseOverlapOf()
         2>/dev/null
 }
 
+# releaseOverlapAllowed SUMMARY: exit 0 if the summary's releaseOverlap is
+# what its loading allows: 0 for the release schemes; for scheme placement
+# (pellets placed from a file, as an earlier bed left them) the exact
+# interpenetration of the file's poses, which the placement check keeps
+# within the touching gap, 1e-4 dp at the default contactTolerance
+releaseOverlapAllowed()
+{
+    awk '{sub(";", "", $2)} $1 == "releaseOverlap" {v = $2; found = 1}
+         $1 == "loadingScheme" {scheme = $2}
+         $1 == "pelletDiameter" {dp = $2}
+         END {if (!found) exit 1
+              if (scheme == "placement") exit !(v + 0 >= 0 && v + 0 <= 1e-4*dp)
+              exit !(v "" == "0")}' "$1" 2>/dev/null
+}
+
 #------------------------------------------------------------------------------

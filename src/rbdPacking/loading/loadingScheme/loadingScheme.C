@@ -15,7 +15,7 @@ using Foam::constant::mathematical::pi;
 
 const Foam::wordList Foam::rbd::loadingScheme::schemes
 ({
-    "column", "twoColumns", "fourColumns", "layers"
+    "column", "twoColumns", "fourColumns", "layers", "placement"
 });
 
 
@@ -25,7 +25,7 @@ const Foam::scalar Foam::rbd::loadingScheme::boundTolerance = 1e-12;
 const Foam::wordList Foam::rbd::loadingScheme::knownEntries
 ({
     "scheme", "spacing", "tilt", "positionDisturbance",
-    "angleDisturbance", "seed", "releaseHeight", "columnOffset"
+    "angleDisturbance", "seed", "releaseHeight", "columnOffset", "file"
 });
 
 
@@ -53,9 +53,40 @@ Foam::rbd::loadingScheme::loadingScheme
     dp_(shape.diameter()),
     rb_(shape.boundingRadius()),
     R_(container.radius()),
-    rng_(seed_)
+    rng_(seed_),
+    placement_()
 {
     checkKnownEntries(dict, knownEntries);
+
+    if (scheme_ == "placement")
+    {
+        // The poses are the file's: nothing is released, drawn or
+        // disturbed
+        string ignored;
+        for (const word& key : knownEntries)
+        {
+            if (key != "scheme" && key != "file" && dict.found(key))
+            {
+                ignored += (ignored.empty() ? "" : ", ") + key;
+            }
+        }
+        if (!ignored.empty())
+        {
+            WarningInFunction
+                << ignored.c_str() << " in " << dict.name() << " ignored: "
+                << "scheme placement places every pellet where its file "
+                << "says, at rest, at t = 0" << endl;
+        }
+        placement_.reset(new placementFile(dict, container, shape));
+        releaseHeight_ = placement_->highestCentre();
+        return;
+    }
+    if (dict.found("file"))
+    {
+        WarningInFunction
+            << "file in " << dict.name() << " is ignored: only scheme "
+            << "placement reads its poses from a file" << endl;
+    }
 
     if (spacing_ < 1)
     {
@@ -390,6 +421,15 @@ void Foam::rbd::loadingScheme::nextPose
 void Foam::rbd::loadingScheme::write(Ostream& os) const
 {
     os.writeEntry("scheme", scheme_);
+    if (placed())
+    {
+        os.writeEntry("file", placement_->file());
+        os.writeKeyword("poses") << placement_->size() << " pellets from "
+            << placement_->path() << ", centres up to "
+            << placement_->highestCentre() << " m high"
+            << token::END_STATEMENT << nl;
+        return;
+    }
     os.writeEntry("spacing", spacing_);
     os.writeEntry("tilt", tilt_);
     os.writeEntry("positionDisturbance", positionDisturbance_);
