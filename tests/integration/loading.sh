@@ -83,7 +83,8 @@ release()
     foamDictionary "$d/system/packingDict" -entry loading/releaseHeight -set 0.05 > /dev/null
     foamDictionary "$d/system/packingDict" -entry loading/scheme -set "$scheme" > /dev/null
     pack "$d" -acceptStatus
-    check "$scheme: the short run exits 0 with -acceptStatus ($(cat $d.time))" "[ $? -eq 0 ]"
+    local status=$?
+    check "$scheme: the short run exits 0 with -acceptStatus ($(cat $d.time))" "[ $status -eq 0 ]"
     csv="$d/postProcessing/rbdPackBed/pellets.csv"
     check "$scheme: $nc pellets released, one per column" \
         "[ \$(tail -n +2 $csv 2>/dev/null | wc -l) -eq $nc ]"
@@ -196,7 +197,8 @@ twoColumnsPack|fourColumnsPack)
     setup "$tmp/a" $entries
     setup "$tmp/b" $entries
     pack "$tmp/a"
-    check "exit status 0 ($(cat $tmp/a.time))" "[ $? -eq 0 ]"
+    status=$?
+    check "exit status 0 ($(cat $tmp/a.time))" "[ $status -eq 0 ]"
     check "status settled, all 8 pellets" \
         "[ \"$(get $tmp/a status)\" = settled ] && [ \"$(get $tmp/a pellets)\" = 8 ]"
     ov="$(get $tmp/a maxOverlap)"
@@ -214,6 +216,76 @@ twoColumnsPack|fourColumnsPack)
     check "same dictionary and seed: the same pellets.csv ($(cat $tmp/b.time))" \
         "cmp -s $tmp/a/postProcessing/rbdPackBed/pellets.csv $tmp/b/postProcessing/rbdPackBed/pellets.csv"
     echo "loading.$case: wall $(cat $tmp/a.time), cpu $(get $tmp/a cpuTime) s, bulkPorosity $(get $tmp/a bulkPorosity), maxOverlap $ov m"
+    ;;
+placementRelease|placementRepack)
+    # Eight cylinders placed by a file: four at z = 20 mm on the points
+    # (+-12 mm, 0), (0, +-12 mm), four at 40 mm on the diagonals, each
+    # turned its own way (bounding spheres 17 mm apart or more, 19.1 mm
+    # from the axis at most: clear of one another, the wall and the top)
+    placement="$tmp/placement.csv"
+    {
+        echo 'id,shape,x,y,z,qw,qx,qy,qz'
+        echo '0,cylinder,0.012,0,0.02,1,0,0,0'
+        echo '1,cylinder,0,0.012,0.02,0.9659258263,0.2588190451,0,0'
+        echo '2,cylinder,-0.012,0,0.02,0.7071067812,0,0.7071067812,0'
+        echo '3,cylinder,0,-0.012,0.02,0.5,0.5,0.5,0.5'
+        echo '4,cylinder,0.0084852814,0.0084852814,0.04,0.8660254038,0,0,0.5'
+        echo '5,cylinder,-0.0084852814,0.0084852814,0.04,0.6,0.8,0,0'
+        echo '6,cylinder,-0.0084852814,-0.0084852814,0.04,0,0,1,0'
+        echo '7,cylinder,0.0084852814,-0.0084852814,0.04,0.5,-0.5,0.5,-0.5'
+    } > "$placement"
+    # place <dir> <file>: the case loaded from the file, number left out
+    place()
+    {
+        setup "$1"
+        mkdir -p "$1/constant"
+        cp "$2" "$1/constant/placement.csv"
+        foamDictionary "$1/system/packingDict" -entry loading -set \
+            '{ scheme placement; file "constant/placement.csv"; }' > /dev/null
+        foamDictionary "$1/system/packingDict" -entry pellets/number -remove > /dev/null
+    }
+    ;;&
+
+placementRelease)
+    # A run of 0.02 s: every pellet still in free fall from its placed
+    # pose, z lowered by g t^2/2, x, y and the orientation unchanged
+    place "$tmp/a" "$placement"
+    foamDictionary "$tmp/a/system/packingDict" -entry simulation/deltaT -set 0.001 > /dev/null
+    foamDictionary "$tmp/a/system/packingDict" -entry simulation/endTime -set 0.02 > /dev/null
+    pack "$tmp/a" -acceptStatus
+    status=$?
+    check "the short run exits 0 with -acceptStatus ($(cat $tmp/a.time))" "[ $status -eq 0 ]"
+    check "the log echoes the file's 8 poses" \
+        "grep -q 'poses *8 pellets from' $tmp/a.log"
+    csv="$tmp/a/postProcessing/rbdPackBed/pellets.csv"
+    t="$(get "$tmp/a" simulatedTime)"
+    check "8 pellets, each at its placed x, y and orientation, z lowered by g t^2/2 (t = $t s)" \
+        "awk -F, -v t=$t -v g=$g 'FNR == 1 {next} NR == FNR {n++; for (k = 3; k <= 9; k++) p[\$1, k] = \$k; next} {m++; dz = 0.5*g*t*t; for (k = 3; k <= 9; k++) {e = (k == 5 ? p[\$1, k] - dz : p[\$1, k]); if ((\$k - e)^2 > 1e-18) bad = 1}} END {exit bad || n != 8 || m != 8 || t < 0.019}' $placement $csv"
+    check "summary releaseOverlap 0" "[ \"\$(get $tmp/a releaseOverlap)\" = 0 ]"
+    ;;
+
+placementRepack)
+    # The placement packed to rest; then its own pellets.csv placed again:
+    # a bed at rest stays where it is (resting contacts hold it from the
+    # first step), and settles again at once
+    place "$tmp/a" "$placement"
+    pack "$tmp/a"
+    status=$?
+    check "exit status 0 ($(cat $tmp/a.time))" "[ $status -eq 0 ]"
+    check "status settled, all 8 pellets" \
+        "[ \"$(get $tmp/a status)\" = settled ] && [ \"$(get $tmp/a pellets)\" = 8 ]"
+    ov="$(get $tmp/a maxOverlap)"
+    check "largest overlap $ov m below 0.5 % of dp" "le ${ov:-1} 5e-5"
+    bed="$tmp/a/postProcessing/rbdPackBed/pellets.csv"
+    place "$tmp/b" "$bed"
+    pack "$tmp/b"
+    status=$?
+    check "the packed bed placed again: exit status 0, settled ($(cat $tmp/b.time))" \
+        "[ $status -eq 0 ] && [ \"$(get $tmp/b status)\" = settled ]"
+    moved="$(awk -F, 'FNR == 1 {next} NR == FNR {x[$1] = $3; y[$1] = $4; z[$1] = $5; next} {d = sqrt(($3 - x[$1])^2 + ($4 - y[$1])^2 + ($5 - z[$1])^2); if (d > m) m = d} END {printf "%.3g", m}' $bed $tmp/b/postProcessing/rbdPackBed/pellets.csv)"
+    check "no pellet of the bed placed again moved more than 0.1 % of dp (largest $moved m)" \
+        "le $moved 1e-5"
+    echo "loading.$case: wall $(cat $tmp/a.time) and $(cat $tmp/b.time), maxOverlap $ov m, bed placed again moved at most $moved m"
     ;;
 esac
 
