@@ -219,9 +219,12 @@ twoColumnsPack|fourColumnsPack)
     ;;
 placementRelease|placementRepack)
     # Eight cylinders placed by a file: four at z = 20 mm on the points
-    # (+-12 mm, 0), (0, +-12 mm), four at 40 mm on the diagonals, each
+    # (+-12 mm, 0), (0, +-12 mm), three at 40 mm on the diagonals, each
     # turned its own way (bounding spheres 17 mm apart or more, 19.1 mm
-    # from the axis at most: clear of one another, the wall and the top)
+    # from the axis at most: clear of one another, the wall and the top),
+    # and pellet 5 upright beside the upright pellet 4, 10.5 mm between
+    # their axes: 0.5 mm apart, where their bounding spheres (r_b 7.07 mm)
+    # overlap by 3.6 mm, so the placement check is the exact shapes'
     placement="$tmp/placement.csv"
     {
         echo 'id,shape,x,y,z,qw,qx,qy,qz'
@@ -230,7 +233,7 @@ placementRelease|placementRepack)
         echo '2,cylinder,-0.012,0,0.02,0.7071067812,0,0.7071067812,0'
         echo '3,cylinder,0,-0.012,0.02,0.5,0.5,0.5,0.5'
         echo '4,cylinder,0.0084852814,0.0084852814,0.04,0.8660254038,0,0,0.5'
-        echo '5,cylinder,-0.0084852814,0.0084852814,0.04,0.6,0.8,0,0'
+        echo '5,cylinder,-0.0020147186,0.0084852814,0.04,1,0,0,0'
         echo '6,cylinder,-0.0084852814,-0.0084852814,0.04,0,0,1,0'
         echo '7,cylinder,0.0084852814,-0.0084852814,0.04,0.5,-0.5,0.5,-0.5'
     } > "$placement"
