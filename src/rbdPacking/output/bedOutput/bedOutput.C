@@ -473,8 +473,10 @@ Foam::string Foam::rbd::bedOutput::summaryUnit(const word& key)
         {"finalMaxOverlap", "[m] largest interpenetration at the end"},
         {
             "releaseOverlap",
-            "[m] largest interpenetration at a release (bounding spheres)"
+            "[m] largest interpenetration at a release (bounding spheres; "
+            "loadingScheme placement: of the placed pellets, exact)"
         },
+        {"loadingScheme", "loading/scheme"},
         {"simulatedTime", "[s]"},
         {"wallTime", "[s]"},
         {"cpuTime", "[s]"},
