@@ -491,8 +491,10 @@ def readLogStatistics(log):
         log/restingSolves, log/lcpIterations, log/largestIsland,
         log/projections, log/minStep    (its closing statistics line)
         log/time [s], log/released, log/steps, log/executionTime [s]
-                                        (its last progress line: how far a
-                                        run got that timed out)
+                                        (how far a run got that timed out:
+                                        its closing statistics line and
+                                        wall time where a stopped run wrote
+                                        them, else its last progress line)
     Entries the log does not have are left out."""
     try:
         text = Path(log).read_text(errors='replace')
@@ -514,6 +516,19 @@ def readLogStatistics(log):
                     'log/released': parseScalar(m.group('released')),
                     'log/steps': parseScalar(m.group('steps')),
                     'log/executionTime': parseScalar(m.group('exec'))})
+    # A run stopped by a signal closes with its statistics at the time it
+    # stopped, after the last progress line
+    m = None
+    for m in _LOG_STATS.finditer(text):
+        pass
+    if m is not None:
+        out['log/time'] = parseScalar(m.group('t'))
+        out['log/steps'] = parseScalar(m.group('steps'))
+        w = None
+        for w in re.finditer(r'^Wall time (\S+) s', text, re.M):
+            pass
+        if w is not None:
+            out['log/executionTime'] = parseScalar(w.group(1))
     return out
 
 
@@ -1030,8 +1045,8 @@ class Report:
         stopped = False
 
         def sumOrLog(r, key, logKey, spec):
-            # a run that did not finish has no summary: its last progress
-            # line says how far it got (marked *)
+            # a run that did not finish has no summary: its log says how
+            # far it got (readLogStatistics; marked *)
             nonlocal stopped
             if r.get(key) is not None or r.get(logKey) is None:
                 return fmt(r.get(key), spec)
@@ -1072,8 +1087,9 @@ class Report:
                       'run.')
         if stopped:
             self.text('\\* a run that did not finish: simulated time, '
-                      'steps and packing time of its last progress line '
-                      '(how far it got).')
+                      'steps and packing time where it stopped (the '
+                      'closing statistics a stopped run writes, else its '
+                      'last progress line).')
 
     def write(self):
         b = self.bench
