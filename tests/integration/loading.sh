@@ -68,6 +68,21 @@ pack()
 
 get() { foamDictionary -entry "$2" -value "$1/postProcessing/rbdPackBed/summary" 2>/dev/null; }
 
+# packToRest <dir>: the whole run, and the checks of every packing case:
+# exit 0, settled with all 8 pellets, largest overlap below 0.5 % of dp
+# (in $ov)
+packToRest()
+{
+    local d="$1" status
+    pack "$d"
+    status=$?
+    check "exit status 0 ($(cat $d.time))" "[ $status -eq 0 ]"
+    check "status settled, all 8 pellets" \
+        "[ \"\$(get $d status)\" = settled ] && [ \"\$(get $d pellets)\" = 8 ]"
+    ov="$(get $d maxOverlap)"
+    check "largest overlap $ov m below 0.5 % of dp" "le ${ov:-1} 5e-5"
+}
+
 # release <dir> <scheme> <columns> [staggered]: the short run and the
 # checks every release case shares; the column offset it finds is in $s.
 # staggered: a pellet may be held back a step or more by the release rule
@@ -196,13 +211,7 @@ twoColumnsPack|fourColumnsPack)
     fi
     setup "$tmp/a" $entries
     setup "$tmp/b" $entries
-    pack "$tmp/a"
-    status=$?
-    check "exit status 0 ($(cat $tmp/a.time))" "[ $status -eq 0 ]"
-    check "status settled, all 8 pellets" \
-        "[ \"$(get $tmp/a status)\" = settled ] && [ \"$(get $tmp/a pellets)\" = 8 ]"
-    ov="$(get $tmp/a maxOverlap)"
-    check "largest overlap $ov m below 0.5 % of dp" "le ${ov:-1} 5e-5"
+    packToRest "$tmp/a"
     awk -F, -f "$here/lib/bedGeometry.awk" \
         "$tmp/a/postProcessing/rbdPackBed/pellets.csv" \
         "$tmp/a/constant/triSurface/pellets.stl" > "$tmp/geometry" 2>/dev/null
@@ -272,13 +281,7 @@ placementRepack)
     # a bed at rest stays where it is (resting contacts hold it from the
     # first step), and settles again at once
     place "$tmp/a" "$placement"
-    pack "$tmp/a"
-    status=$?
-    check "exit status 0 ($(cat $tmp/a.time))" "[ $status -eq 0 ]"
-    check "status settled, all 8 pellets" \
-        "[ \"$(get $tmp/a status)\" = settled ] && [ \"$(get $tmp/a pellets)\" = 8 ]"
-    ov="$(get $tmp/a maxOverlap)"
-    check "largest overlap $ov m below 0.5 % of dp" "le ${ov:-1} 5e-5"
+    packToRest "$tmp/a"
     bed="$tmp/a/postProcessing/rbdPackBed/pellets.csv"
     place "$tmp/b" "$bed"
     pack "$tmp/b"

@@ -5,6 +5,7 @@
 #include "dictionaryChecks.H"
 #include "OStringStream.H"
 #include "Switch.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
@@ -238,6 +239,18 @@ Foam::word Foam::rbd::getChoiceOrDefault
         badEntry(dict, key, value, "one of " + alternatives(allowed));
     }
     return value;
+}
+
+
+Foam::fileName Foam::rbd::casePath(const fileName& entry)
+{
+    fileName path(entry);
+    path.expand();
+    if (!path.isAbsolute() && !getEnv("FOAM_CASE").empty())
+    {
+        path = fileName(getEnv("FOAM_CASE"))/path;
+    }
+    return path;
 }
 
 

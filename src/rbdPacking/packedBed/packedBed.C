@@ -323,7 +323,9 @@ Foam::rbd::packedBed::packedBed(const Time& runTime, const dictionary& dict)
     }
     const scalar release = loading_->releaseHeight() - rb;
     if (loading_->placed())
-    {}
+    {
+        // number_: the file's (above)
+    }
     else if (hasNumber)
     {
         number_ = getPositiveLabel(pelletsDict, "number");
@@ -950,7 +952,7 @@ void Foam::rbd::packedBed::checkFilling
 }
 
 
-Foam::scalar Foam::rbd::packedBed::checkPlacement
+void Foam::rbd::packedBed::checkPlacement
 (
     const dictionary& loadingDict
 ) const
@@ -1002,7 +1004,6 @@ Foam::scalar Foam::rbd::packedBed::checkPlacement
           + Foam::name(slop) + " m; the deepest overlap of the file)"
         );
     }
-    return worst ? max(0 - worst->gap, scalar(0)) : 0;
 }
 
 

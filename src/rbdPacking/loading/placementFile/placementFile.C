@@ -4,6 +4,7 @@
 
 #include "placementFile.H"
 #include "dictionaryChecks.H"
+#include "bedOutput.H"
 #include "OSspecific.H"
 #include <cmath>
 #include <cstdlib>
@@ -11,12 +12,6 @@
 #include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-const Foam::string Foam::rbd::placementFile::header
-(
-    "id,shape,x,y,z,qw,qx,qy,qz"
-);
-
 
 const Foam::scalar Foam::rbd::placementFile::unitTolerance = 1e-6;
 
@@ -66,23 +61,15 @@ Foam::rbd::placementFile::placementFile
 )
 :
     file_(dict.get<fileName>("file")),
-    path_(file_),
+    path_(casePath(file_)),
     x_(),
     q_(),
     lines_()
 {
-    // Relative paths are relative to the case directory (as the file of
-    // an stl pellet)
-    path_.expand();
-    if (!path_.isAbsolute() && !getEnv("FOAM_CASE").empty())
-    {
-        path_ = fileName(getEnv("FOAM_CASE"))/path_;
-    }
-
     const string what
     (
         "a file of initial poses, the format of pellets.csv: the header '"
-      + header + "', then one pellet a line"
+      + bedOutput::pelletsHeader + "', then one pellet a line"
     );
     if (!isFile(path_))
     {
@@ -120,7 +107,7 @@ Foam::rbd::placementFile::placementFile
 
         if (!headerRead)
         {
-            if (line != header)
+            if (line != bedOutput::pelletsHeader)
             {
                 bad("the first line is '" + line + "', not the header");
             }
@@ -142,7 +129,7 @@ Foam::rbd::placementFile::placementFile
             bad
             (
                 Foam::name(label(fields.size())) + " fields, not the 9 of '"
-              + header + "'"
+              + bedOutput::pelletsHeader + "'"
             );
         }
 

@@ -30,6 +30,12 @@ const Foam::fileName Foam::rbd::bedOutput::stlName
 
 const Foam::word Foam::rbd::bedOutput::pelletsName("pellets.csv");
 
+
+const Foam::string Foam::rbd::bedOutput::pelletsHeader
+(
+    "id,shape,x,y,z,qw,qx,qy,qz"
+);
+
 const Foam::word Foam::rbd::bedOutput::summaryName("summary");
 
 
@@ -108,7 +114,7 @@ void Foam::rbd::bedOutput::writePellets() const
     {
         OFstream os(tmp);
         os.precision(12);
-        os  << "id,shape,x,y,z,qw,qx,qy,qz" << nl;
+        os  << pelletsHeader.c_str() << nl;
         forAll(bodies_, i)
         {
             const point& x = bodies_[i].x();

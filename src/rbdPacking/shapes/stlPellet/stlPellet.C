@@ -6,7 +6,6 @@
 #include "dictionaryChecks.H"
 #include "stlIO.H"
 #include "massProperties.H"
-#include "OSspecific.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -27,7 +26,7 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
 :
     pelletShape(dict, 0),
     file_(dict.get<fileName>("file")),
-    path_(file_),
+    path_(casePath(file_)),
     scale_(getPositiveOrDefault(dict, "scale", 1, "-")),
     surface_(),
     volume_(0),
@@ -39,13 +38,6 @@ Foam::rbd::stlPellet::stlPellet(const dictionary& dict)
         WarningInFunction
             << "faces in " << dict.name() << " is ignored for an stl "
             << "pellet: its mesh is the file's" << endl;
-    }
-
-    // Relative paths are relative to the case directory
-    path_.expand();
-    if (!path_.isAbsolute() && !getEnv("FOAM_CASE").empty())
-    {
-        path_ = fileName(getEnv("FOAM_CASE"))/path_;
     }
 
     triMesh surface;

@@ -9,11 +9,9 @@
 #include "placementFile.H"
 #include "loadingScheme.H"
 #include "IStringStream.H"
-#include "OSspecific.H"
+#include "../../caseWriting/caseWritingTempDir.H"
 
-#include <cstdio>
 #include <fstream>
-#include <unistd.h>
 
 using namespace Foam;
 
@@ -39,22 +37,15 @@ namespace
     // A file of this text in a fresh directory; removed with it
     struct tempFile
     {
-        std::string dir;
+        caseWritingTest::tempDir dir;
         std::string path;
 
         explicit tempFile(const std::string& text)
+        :
+            path(dir.path()/"placement.csv")
         {
-            char name[] = "/tmp/placementFileTestXXXXXX";
-            dir = mkdtemp(name);
-            path = dir + "/placement.csv";
             std::ofstream os(path);
             os << text;
-        }
-
-        ~tempFile()
-        {
-            std::remove(path.c_str());
-            rmdir(dir.c_str());
         }
     };
 }
