@@ -1,7 +1,8 @@
 // Unit tests for src/rbdPacking/contactResolution/lcp/lcpBodySpace: its
 // products and solves against the dense n x n matrix A = J M^-1 J^T +
 // diag(s), built here by hand from bodies and contacts (independently of
-// lcpTestProblems.H), and dense solves of (A_FF + eps I) x_F = r_F
+// lcpTestProblems.H), dense solves of (A_FF + eps I) x_F = r_F, and its
+// block factorisation of K against a dense Cholesky
 
 #include <gtest/gtest.h>
 #include "lcpBodySpace.H"
@@ -278,102 +279,113 @@ TEST(lcpBodySpace, applySolvesTheActiveRowsShiftedByEps)
 }
 
 
-TEST(lcpBodySpace, storesKOrderedAndFactorisesItAsEigensAMDLDLTDoes)
+TEST(lcpBodySpace, blockFactorisationSolvesKAsTheDenseCholeskyDoes)
 {
-    // lcpBodySpace keeps K = I + G^T E^-1 G already in its AMD ordering and
-    // factorises it in place; the reference here is the plain form: K
-    // summed row by row in natural order, factorised by Eigen's
-    // SimplicialLDLT<AMDOrdering> (which orders it at each factorisation),
-    // and column-major products. Its header promises the same factors:
-    // the answers must agree to the bit, so the packings do too
-    typedef Eigen::SparseMatrix<double> sparseMatrix;
+    // lcpBodySpace sums K = I + G^T E^-1 G into 6 x 6 blocks of bodies
+    // and factorises it
+    // block-sparse in its own (AMD) order, fill included; the reference
+    // here is K built densely from G and factorised by a dense Cholesky:
+    // y = K^-1 G^T E^-1 r and x = E^-1 (r - G y). Well conditioned (E^-1
+    // of order 1/A_ii), the two agree to round-off; and the same factors
+    // give the same answers to the bit (the packings are deterministic).
+    // Rows one by one (each on other bodies than the row before) and in
+    // runs of three on the same bodies (as the rows of a contact come)
     for (const unsigned seed : {7u, 8u, 9u})
     {
-        const label n = 60;
-        const problem P(makeProblem(7, n, seed, seed == 8));
-        const sparseMatrix& G = P.factors.G;
-        const sparseMatrix Gt(G.transpose());
-        const label d = G.cols();
-        rbd::lcpBodySpace B(P.factors);
-
+        const problem P(makeProblem(7, 60, seed, seed == 8));
         std::mt19937 gen(seed);
         std::uniform_real_distribution<double> U01(0, 1);
         std::normal_distribution<double> N(0, 1);
-        for (const double share : {1.0, 0.5})
+        for (const bool runs : {false, true})
         {
-            Vec Einv(Vec::Zero(n));
-            for (label a = 0; a < n; ++a)
+            // Runs: each row three times, its entries scaled at random
+            // (the same bodies, other directions)
+            Mat G(P.factors.G);
+            Vec s(P.s);
+            if (runs)
             {
-                if (U01(gen) < share)
+                const Mat G1(G);
+                G.resize(3*G1.rows(), G1.cols());
+                s.resize(3*G1.rows());
+                for (label a = 0; a < G1.rows(); ++a)
                 {
-                    Einv(a) = 1/(P.s(a) + 1e-3*P.A(a, a));
-                }
-            }
-
-            // K by rows in natural order: (e g_p) g_q added per row a
-            Mat K(Mat::Identity(d, d));
-            for (label a = 0; a < n; ++a)
-            {
-                if (Einv(a) == 0) continue;
-                for (sparseMatrix::InnerIterator p(Gt, a); p; ++p)
-                {
-                    const double eg = Einv(a)*p.value();
-                    for (sparseMatrix::InnerIterator q(Gt, a); q; ++q)
+                    for (label k = 0; k < 3; ++k)
                     {
-                        if (q.row() <= p.row())
+                        for (label j = 0; j < G1.cols(); ++j)
                         {
-                            K(p.row(), q.row()) += eg*q.value();
+                            G(3*a + k, j) = G1(a, j)*(0.5 + U01(gen));
                         }
+                        s(3*a + k) = P.s(a);
                     }
                 }
             }
-            // Its pattern: I plus every (p, q) that some row couples
-            std::vector<Eigen::Triplet<double>> t;
-            for (label j = 0; j < d; ++j)
-            {
-                for (label i = j; i < d; ++i)
-                {
-                    bool coupled = i == j;
-                    for (label a = 0; a < n && !coupled; ++a)
-                    {
-                        coupled = Gt.coeff(i, a) != 0 && Gt.coeff(j, a) != 0;
-                    }
-                    if (coupled) t.emplace_back(i, j, K(i, j));
-                }
-            }
-            sparseMatrix Kl(d, d);
-            Kl.setFromTriplets(t.begin(), t.end());
-            Kl.makeCompressed();
-            Eigen::SimplicialLDLT
-            <
-                sparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>
-            > ref(Kl);
-            ASSERT_EQ(ref.info(), Eigen::Success);
+            rbd::lcpFactors factors;
+            factors.G = G.sparseView();
+            factors.s = s;
+            const label n = G.rows();
+            const label d = G.cols();
+            rbd::lcpBodySpace B(factors);
+            rbd::lcpBodySpace again(factors);
 
-            ASSERT_TRUE(B.factorise(Einv));
-            for (label k = 0; k < 3; ++k)
+            for (const double share : {1.0, 0.5, 0.1})
             {
-                Vec r(n);
-                for (label i = 0; i < n; ++i) r(i) = N(gen);
-                const Vec Er(Einv.cwiseProduct(r));
-                const Vec y(ref.solve(Vec(Gt*Er)));
-                const Vec expected(Er - Einv.cwiseProduct(Vec(G*y)));
-                const Vec x(B.apply(r));
+                Vec Einv(Vec::Zero(n));
                 for (label a = 0; a < n; ++a)
                 {
-                    ASSERT_EQ(x(a), expected(a))
-                        << "seed " << seed << ", share " << share
-                        << ", row " << a;
+                    if (U01(gen) < share)
+                    {
+                        Einv(a) = 1/(s(a) + 1e-3*G.row(a).squaredNorm());
+                    }
                 }
-                const Vec Ax(B.product(r));
-                const Vec Aref(G*Vec(Gt*r) + P.s.cwiseProduct(r));
-                for (label a = 0; a < n; ++a)
+                const Mat K
+                (
+                    Mat::Identity(d, d) + G.transpose()*Einv.asDiagonal()*G
+                );
+                const Eigen::LLT<Mat> ref(K);
+                ASSERT_EQ(ref.info(), Eigen::Success);
+
+                ASSERT_TRUE(B.factorise(Einv));
+                ASSERT_TRUE(again.factorise(Einv));
+                for (label k = 0; k < 3; ++k)
                 {
-                    ASSERT_EQ(Ax(a), Aref(a)) << "product, row " << a;
+                    Vec r(n);
+                    for (label i = 0; i < n; ++i) r(i) = N(gen);
+                    const Vec Er(Einv.cwiseProduct(r));
+                    const Vec y(ref.solve(Vec(G.transpose()*Er)));
+                    const Vec expected(Er - Einv.cwiseProduct(Vec(G*y)));
+                    const Vec x(B.apply(r));
+                    SCOPED_TRACE
+                    (
+                        "seed " + std::to_string(seed) + (runs ? ", runs" : "")
+                      + ", share " + std::to_string(share)
+                    );
+                    EXPECT_LT(relErr(x, expected), 1e-12);
+                    const Vec x2(again.apply(r));
+                    for (label a = 0; a < n; ++a)
+                    {
+                        ASSERT_EQ(x(a), x2(a)) << "row " << a;
+                    }
+                    EXPECT_LT
+                    (
+                        relErr(B.product(r), Vec(G*(G.transpose()*r)) + s.cwiseProduct(r)),
+                        1e-13
+                    );
                 }
             }
         }
     }
+}
+
+
+TEST(lcpBodySpace, refusesFactorsNotInBlocksOfSixColumns)
+{
+    // The body-space solve works by bodies of 6 columns; factors of any
+    // other width are not its to take
+    const problem P(makeProblem(3, 30, 4, false));
+    rbd::lcpFactors odd;
+    odd.G = P.factors.G.leftCols(17);
+    odd.s = P.s;
+    EXPECT_FALSE(rbd::lcpBodySpace::pays(P.A.sparseView(), odd));
 }
 
 
