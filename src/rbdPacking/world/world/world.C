@@ -82,7 +82,7 @@ Foam::rbd::world::world
     // sparse times dense above 20 000 nonzeros, dense GEMM) on all OpenMP
     // threads unless told: held to simulation/threads, so that threads 1
     // runs on one core. (No product in src/ is of those kinds today:
-    // lcpBodySpace writes its gathers out)
+    // lcpBodySpace works by 6 x 6 blocks of its own)
     Eigen::setNbThreads(controls.threads);
 
     Info<< "Narrow phase (contactModel " << controls.contactModel << "): ";
