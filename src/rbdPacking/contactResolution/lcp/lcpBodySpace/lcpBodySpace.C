@@ -42,7 +42,8 @@ void Foam::rbd::lcpBodySpace::analyse()
         for (sparseMatrix::InnerIterator it(Gt, a); it; ++it)
         {
             const label body = it.row()/6;
-            if (rowBody_.size() == size_t(rowStart_[a]) || rowBody_.back() != body)
+            const bool first = rowBody_.size() == size_t(rowStart_[a]);
+            if (first || rowBody_.back() != body)
             {
                 rowBody_.push_back(body);
                 rowG_.push_back(bodyVector::Zero());

@@ -365,11 +365,8 @@ TEST(lcpBodySpace, blockFactorisationSolvesKAsTheDenseCholeskyDoes)
                     {
                         ASSERT_EQ(x(a), x2(a)) << "row " << a;
                     }
-                    EXPECT_LT
-                    (
-                        relErr(B.product(r), Vec(G*(G.transpose()*r)) + s.cwiseProduct(r)),
-                        1e-13
-                    );
+                    const Vec Ar(G*(G.transpose()*r) + s.cwiseProduct(r));
+                    EXPECT_LT(relErr(B.product(r), Ar), 1e-13);
                 }
             }
         }
