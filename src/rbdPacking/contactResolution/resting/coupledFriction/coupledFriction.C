@@ -215,13 +215,6 @@ bool Foam::rbd::coupledFriction::solve
     std::vector<scalar> limitUsed(nc, 0);
     bool settled = false;
     label round = 0;
-    // Where the exchanges of a round cycle and the interior point
-    // answers, the later rounds go to the interior point at once (the
-    // exchanges, even started from the sides of the interior point's
-    // answer to the same problem, converged on 4 of 2 749 problems of
-    // the 100-cylinder heap: docs/restingSolveCost.md, "Twenty-second
-    // session")
-    bool exchanges = true;
     for (; round < rounds_ && !settled; ++round)
     {
         setB();
@@ -240,9 +233,8 @@ bool Foam::rbd::coupledFriction::solve
         }
 
         const lcpResult lr =
-            boxed_.solve(A, body.get(), B, lo, hi, sides, x, exchanges);
+            boxed_.solve(A, body.get(), B, lo, hi, sides, x);
         res.iterations += lr.iterations;
-        exchanges = exchanges && lr.newtonSteps == 0;
         if (!(lr.maxViolation <= lcpSolver::usableViolation))
         {
             return false;
