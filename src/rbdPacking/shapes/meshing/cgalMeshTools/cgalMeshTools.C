@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/clip.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/IO/STL.h>
@@ -456,6 +457,15 @@ Foam::rbd::triMesh Foam::rbd::cgalMeshTools::clipByPlane
     const vector& n
 )
 {
+    // The cut points are constructed in doubles: two of them, or a cut
+    // point and a vertex just off the plane, can round to the same point,
+    // leaving zero-length edges and zero-area triangles. Those are
+    // self-intersections to CGAL, and the next cut of the same pellet (a
+    // pellet has a cap per contact) failed on them (an assertion on two
+    // lines that do not meet, with the exact kernel too). So every cut
+    // mesh leaves with its degenerate triangles removed by edge collapses
+    // and flips (PMP::remove_degenerate_faces).
+    //
     // A plane that holds a face of the mesh (a cap's cut face beside
     // another cap of the same pellet) can trip CGAL's corefinement of
     // coplanar faces: an assertion (parallel lines intersected, with
@@ -465,6 +475,7 @@ Foam::rbd::triMesh Foam::rbd::cgalMeshTools::clipByPlane
     // with a FatalError that names the cut.
     const boundBox bb(mesh.points());
     const scalar size = bb.mag();
+    string why;
     for (label attempt = 0; attempt < 3; ++attempt)
     {
         const scalar shift = attempt*clipShift*size;
@@ -475,24 +486,28 @@ Foam::rbd::triMesh Foam::rbd::cgalMeshTools::clipByPlane
             const kernel::Plane_3 plane(n.x(), n.y(), n.z(), -(n & q));
             PMP::clip(sm, plane, CGAL::parameters::clip_volume(true));
             PMP::triangulate_faces(sm);
-            sm.collect_garbage();
-            return fromSurfaceMesh(sm);
+            if (PMP::remove_degenerate_faces(sm))
+            {
+                sm.collect_garbage();
+                return fromSurfaceMesh(sm);
+            }
+            why = "degenerate triangles left that could not be removed";
         }
         catch (const CGAL::Failure_exception& e)
         {
-            if (attempt == 2)
-            {
-                FatalErrorInFunction
-                    << "CGAL could not cut a pellet's surface (" << size
-                    << " m across) by the plane through " << p
-                    << " with normal " << n << ", nor by the planes moved "
-                    << clipShift*size << " and " << 2*clipShift*size
-                    << " m along it: " << e.what() << nl
-                    << "    Set contactTreatment none, or report the case."
-                    << exit(FatalError);
-            }
+            why = e.what();
         }
     }
+
+    FatalErrorInFunction
+        << "CGAL could not cut a pellet's surface (" << size
+        << " m across) by the plane through " << p
+        << " with normal " << n << ", nor by the planes moved "
+        << clipShift*size << " and " << 2*clipShift*size
+        << " m along it: " << why.c_str() << nl
+        << "    Set contactTreatment none, or report the case."
+        << exit(FatalError);
+
     return triMesh();
 }
 

@@ -1,6 +1,8 @@
 // Unit tests for src/rbdPacking/shapes/meshing/cgalMeshTools
 
 #include <gtest/gtest.h>
+#include <fstream>
+#include <string>
 #include "cgalMeshTools.H"
 #include "rbdPacking/shapes/meshing/testMeshes.H"
 
@@ -178,4 +180,65 @@ TEST(cgalMeshTools, triangulateSquareWithHole)
         area += A;
     }
     EXPECT_NEAR(area, 0.75, 1e-15);
+}
+
+
+TEST(cgalMeshTools, successiveCutsLeaveNoDegenerateTriangles)
+{
+    // A pellet of a bed of six cylinders is capped at its contacts one cut
+    // after another (contactGeometry::cap). The cut points are rounded to
+    // doubles: the second of these cuts left two zero-area triangles, and
+    // CGAL's clip failed on the third (an assertion on lines that do not
+    // meet), so the case writer stopped. Each cut must leave a closed,
+    // outward, non-self-intersecting solid without zero-area triangles.
+    const std::string file
+    (
+        std::string(RBD_TEST_SOURCE_DIR)
+      + "/rbdPacking/shapes/meshing/data/sixCylindersCapSequence.cuts"
+    );
+    std::ifstream is(file);
+    ASSERT_TRUE(is.good()) << "cannot read " << file;
+    std::string line;
+    while (is.peek() == '#')
+    {
+        std::getline(is, line);
+    }
+    label nPlanes = 0;
+    is >> nPlanes;
+    List<point> p(nPlanes);
+    List<vector> n(nPlanes);
+    for (label k = 0; k < nPlanes; ++k)
+    {
+        is >> p[k].x() >> p[k].y() >> p[k].z()
+           >> n[k].x() >> n[k].y() >> n[k].z();
+    }
+    label nPoints = 0, nFaces = 0;
+    is >> nPoints >> nFaces;
+    pointField x(nPoints);
+    for (point& q : x)
+    {
+        is >> q.x() >> q.y() >> q.z();
+    }
+    List<triFace> f(nFaces);
+    for (triFace& t : f)
+    {
+        is >> t[0] >> t[1] >> t[2];
+    }
+    ASSERT_FALSE(is.fail()) << "truncated " << file;
+    ASSERT_EQ(nPlanes, 3);
+
+    rbd::triMesh m(x, f);
+    ASSERT_EQ(rbd::checkClosedSolid(m), "");
+    scalar V = m.volume();
+    for (label k = 0; k < nPlanes; ++k)
+    {
+        m = rbd::cgalMeshTools::clipByPlane(m, p[k], n[k]);
+        EXPECT_EQ(rbd::checkClosedSolid(m), "") << "after cut " << k;
+
+        // Each cap takes a little of the pellet, never all of it
+        const scalar cutV = m.volume();
+        EXPECT_LT(cutV, V) << "cut " << k;
+        EXPECT_GT(cutV, 0.9*V) << "cut " << k;
+        V = cutV;
+    }
 }
