@@ -446,7 +446,8 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
     const Eigen::VectorXd& lo,
     const Eigen::VectorXd& hi,
     std::vector<side>& sides,
-    Eigen::VectorXd& x
+    Eigen::VectorXd& x,
+    const bool exchanges
 ) const
 {
     typedef Eigen::SparseMatrix<double> sparseMatrix;
@@ -536,7 +537,7 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
 
     blockExchangeProgress progress(n);
 
-    for (label iter = 0; iter < maxIterations_; ++iter)
+    for (label iter = 0; exchanges && iter < maxIterations_; ++iter)
     {
         // The variables at their bounds, and the free ones
         Eigen::VectorXd xFixed(Eigen::VectorXd::Zero(n));
@@ -645,8 +646,12 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
         }
     }
 
+    // Without exchanges no candidate: the interior point's answer is
+    // taken as it is (the measure is 0 for x = 0, so a zero candidate
+    // could not be beaten)
     x = best;
-    scalar bestViolation = violation(product(x) + b, b, lo, hi, x);
+    scalar bestViolation =
+        exchanges ? violation(product(x) + b, b, lo, hi, x) : GREAT;
     result.converged = result.converged && bestViolation <= tolerance_;
 
     // Block exchanges cycled or ran out: the interior point, and the
@@ -654,10 +659,10 @@ Foam::rbd::lcpResult Foam::rbd::boxedBlockPivoting::solve
     if (!result.converged && interiorPointIterations_ > 0)
     {
         Eigen::VectorXd xi;
-        result.iterations +=
-            interiorPoint(A, body, b, lo, hi, diagMax, xi);
+        result.newtonSteps = interiorPoint(A, body, b, lo, hi, diagMax, xi);
         const Eigen::VectorXd wi(product(xi) + b);
         const scalar vi = violation(wi, b, lo, hi, xi);
+        result.iterations += result.newtonSteps;
         if (vi < bestViolation)
         {
             x = xi;

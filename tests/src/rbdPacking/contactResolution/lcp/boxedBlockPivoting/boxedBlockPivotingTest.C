@@ -10,6 +10,7 @@
 #include "boxedBlockPivoting.H"
 
 #include <limits>
+#include <memory>
 
 using namespace Foam;
 using namespace lcpTest;
@@ -309,6 +310,60 @@ TEST(boxedBlockPivoting, interiorPointInBodySpaceMeetsTheToleranceUnrefined)
         ) << what;
     }
     EXPECT_GE(inBodySpace, 30);
+}
+
+
+TEST(boxedBlockPivoting, withoutExchangesTheInteriorPointAnswersAlone)
+{
+    // exchanges = false (the later rounds of an island whose first round
+    // cycled): no factorisation of block pivoting, the interior point
+    // from the start; its answer matches enumeration in contact and in
+    // body space, and every iteration is one of its Newton steps
+    const rbd::boxedBlockPivoting solver;
+    rng gen(16);
+    label inBodySpace = 0;
+    for (int trial = 0; trial < 30; ++trial)
+    {
+        const boxedProblem q(randomFrictionProblem(gen, uniformInt(gen, 1, 3)));
+        Vec xRef;
+        ASSERT_TRUE(enumerate(q, xRef));
+        const Eigen::SparseMatrix<double> As(q.p.A.sparseView());
+        std::unique_ptr<rbd::lcpBodySpace> body;
+        if (rbd::lcpBodySpace::pays(As, q.factors))
+        {
+            body.reset(new rbd::lcpBodySpace(q.factors));
+            ++inBodySpace;
+        }
+        for (const bool exchanges : {true, false})
+        {
+            const std::string what =
+                "trial " + std::to_string(trial)
+              + (exchanges ? ", exchanges" : ", interior point alone");
+            std::vector<rbd::boxedBlockPivoting::side> sides;
+            Vec x;
+            const rbd::lcpResult r = solver.solve
+            (
+                As, body.get(), q.p.b, q.lo, q.hi, sides, x, exchanges
+            );
+            EXPECT_TRUE(r.converged) << what << ": " << r.maxViolation;
+            EXPECT_LE
+            (
+                (x - xRef).cwiseAbs().maxCoeff(),
+                1e-6*xRef.cwiseAbs().maxCoeff() + 1e-15
+            ) << what;
+            if (!exchanges)
+            {
+                EXPECT_GT(r.newtonSteps, 0) << what;
+                EXPECT_EQ(r.iterations, r.newtonSteps) << what;
+            }
+            else
+            {
+                EXPECT_LE(r.newtonSteps, r.iterations) << what;
+            }
+            ASSERT_EQ(label(sides.size()), label(x.size())) << what;
+        }
+    }
+    EXPECT_GE(inBodySpace, 3);
 }
 
 
