@@ -108,6 +108,13 @@ Foam::rbd::triMesh Foam::rbd::contactGeometry::cap
         return pellet;
     }
 
+    // Nor where the plane cuts deep into the pellet (capDepthLimit): a
+    // contact normal across the pellet, not a cap
+    if (reach > capDepthLimit*capHeight)
+    {
+        return pellet;
+    }
+
     // clipByPlane keeps (x - q) . (-u) <= 0, i.e. (x - p) . u >= capHeight
     return cgalMeshTools::clipByPlane(pellet, p + capHeight*u, -u);
 }

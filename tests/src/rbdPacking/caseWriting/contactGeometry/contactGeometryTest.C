@@ -149,6 +149,54 @@ TEST(contactGeometry, aSecondCapOnTheSamePlaneLeavesThePellet)
 }
 
 
+TEST(contactGeometry, aPlaneAcrossThePelletIsNoCap)
+{
+    // Two stacked cylinders of one diameter touch along coinciding rims,
+    // where a contact can carry a normal across the axes: for one of
+    // them its plane runs along the side, and cut there it kept a sliver
+    // of the pellet (the next cap left nothing, and the case writer
+    // stopped on a pellet of no volume). A cut deeper than capDepthLimit
+    // capHeights is no cap: the pellet stays as it is.
+    const scalar a = 0.004, hc = 1e-4;
+    rbd::triMesh cube(rbdTest::box(2*a, 2*a, 2*a));
+    cube.transform(tensor::I, vector(-a, -a, -a));
+
+    // The contact at an edge of the side x = -a, its normal into the
+    // pellet along -x: the whole cube lies beyond the plane
+    const rbd::triMesh across = rbd::contactGeometry::cap
+    (
+        cube, point(-a, 0, a), vector(-1, 0, 0), hc
+    );
+    EXPECT_EQ(across.points().size(), cube.points().size());
+    EXPECT_EQ(across.volume(), cube.volume());
+
+    // The same contact with its normal into the pellet, +x: a cap of
+    // height hc off the side, as always
+    const rbd::triMesh capped = rbd::contactGeometry::cap
+    (
+        cube, point(-a, 0, a), vector(1, 0, 0), hc
+    );
+    EXPECT_EQ(rbd::checkClosedSolid(capped), "");
+    EXPECT_NEAR
+    (
+        cube.volume() - capped.volume(), 4*a*a*hc, 1e-12*cube.volume()
+    );
+
+    // A pellet overlapped by capDepthLimit capHeights less a little is
+    // still capped
+    const scalar depth = (rbd::contactGeometry::capDepthLimit - 1.5)*hc;
+    const rbd::triMesh deep = rbd::contactGeometry::cap
+    (
+        cube, point(-a + depth, 0, 0), vector(1, 0, 0), hc
+    );
+    EXPECT_NEAR
+    (
+        cube.volume() - deep.volume(), 4*a*a*(depth + hc),
+        1e-12*cube.volume()
+    );
+}
+
+
 TEST(contactGeometry, touchingFiltersGapBottomAndDuplicates)
 {
     List<rbd::contact> all
