@@ -151,12 +151,12 @@ TEST(contactGeometry, aSecondCapOnTheSamePlaneLeavesThePellet)
 
 TEST(contactGeometry, aPlaneAcrossThePelletIsNoCap)
 {
-    // Two stacked cylinders of one diameter touch along coinciding rims,
-    // where a contact can carry a normal across the axes: for one of
-    // them its plane runs along the side, and cut there it kept a sliver
-    // of the pellet (the next cap left nothing, and the case writer
-    // stopped on a pellet of no volume). A cut deeper than capDepthLimit
-    // capHeights is no cap: the pellet stays as it is.
+    // Where the rims of two stacked cylinders met (a bed of ten), a
+    // contact carried a normal across the axes: for one of them its plane
+    // ran along the side, and cut there it kept a sliver of the pellet
+    // (the next cap left nothing, and the case writer stopped on a
+    // pellet of no volume). A cut deeper than capDepthLimit capHeights
+    // is no cap: the pellet stays as it is.
     const scalar a = 0.004, hc = 1e-4;
     rbd::triMesh cube(rbdTest::box(2*a, 2*a, 2*a));
     cube.transform(tensor::I, vector(-a, -a, -a));
