@@ -7,7 +7,6 @@
 #include "collisionResolver.H"
 #include "lcpBodySpace.H"
 
-#include <algorithm>
 #include <limits>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -222,25 +221,7 @@ bool Foam::rbd::coupledFriction::solve
     // of such a round converged on 0-6 % of the problems, 0.0 % on a
     // 100-cylinder heap, against 5-50 % on islands of 1-8 bodies
     // (docs/restingSolveCost.md, "Twenty-third session")
-    label movingBodies = 0;
-    {
-        std::vector<label> moved;
-        for (label a = 0; a < nc; ++a)
-        {
-            const contact& c = contacts[cs[a]];
-            for (const label b : {c.i, c.k})
-            {
-                if (b >= 0 && movedBy(c, b, fixed))
-                {
-                    moved.push_back(b);
-                }
-            }
-        }
-        std::sort(moved.begin(), moved.end());
-        movingBodies =
-            std::unique(moved.begin(), moved.end()) - moved.begin();
-    }
-    const bool large = movingBodies >= interiorPointBodies;
+    const bool large = assembly.movingBodies() >= interiorPointBodies;
     bool exchanges = true;
     for (; round < rounds_ && !settled; ++round)
     {

@@ -16,7 +16,8 @@ Foam::rbd::lcpAssembly::lcpAssembly(const scalar compliance)
     bodyRows_(),
     bodyColumn_(),
     slot_(),
-    gTriplets_()
+    gTriplets_(),
+    movingBodies_(0)
 {}
 
 
@@ -90,6 +91,8 @@ void Foam::rbd::lcpAssembly::assemble
         addRow(c.i, a, false);
         addRow(c.k, a, true);
     }
+    movingBodies_ = touched.size();
+
     // Fewer body columns (6 per moving body) than rows: the factors
     // pay (below)
     const bool factorsPay = 6*label(touched.size()) < n;
