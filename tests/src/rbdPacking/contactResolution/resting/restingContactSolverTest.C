@@ -186,6 +186,40 @@ TEST(restingCompliance, leavesSphereContactsExact)
 
 namespace
 {
+    //- The contacts of a cylinder's flat face centred at centre, in the
+    //  plane of e1 and e2 with normal nrm: six points of its rim at
+    //  irregular angles, body i (centre xi) on body k (centre xk; the
+    //  plane for tubeBottom), friction coefficient mu
+    void appendFaceContacts
+    (
+        DynamicList<contact>& cs,
+        const point& centre,
+        const vector& nrm,
+        const vector& e1,
+        const vector& e2,
+        const label i,
+        const point& xi,
+        const label k,
+        const point& xk,
+        const scalar mu
+    )
+    {
+        for (label j = 0; j < 6; ++j)
+        {
+            const scalar angle = 2*M_PI*(j + 0.3)/6;
+            contact c;
+            c.i = i;
+            c.k = k;
+            c.n = nrm;
+            c.mu = mu;
+            c.p = centre + a*(Foam::cos(angle)*e1 + Foam::sin(angle)*e2);
+            c.ri = c.p - xi;
+            c.rk = k == tubeBottom ? vector(c.p) : c.p - xk;
+            cs.append(c);
+        }
+    }
+
+
     //- A cylinder standing on its flat face on a plane tilted by tilt
     //  [deg], friction coefficient mu, touching at six rim points, solved
     //  for one step with the friction coupled or staggered
@@ -222,19 +256,10 @@ namespace
             bs[0] =
                 rigidBody(m, Ib, x, quaternion(vector(0, 1, 0), tilt), true);
             DynamicList<contact> cs;
-            for (label k = 0; k < 6; ++k)
-            {
-                const scalar angle = 2*M_PI*(k + 0.3)/6;
-                contact c;
-                c.i = 0;
-                c.k = tubeBottom;
-                c.n = n;
-                c.mu = mu;
-                c.p = a*(Foam::cos(angle)*e1 + Foam::sin(angle)*e2);
-                c.ri = c.p - x;
-                c.rk = c.p;
-                cs.append(c);
-            }
+            appendFaceContacts
+            (
+                cs, Zero, n, e1, e2, 0, x, tubeBottom, Zero, mu
+            );
 
             const restingContactSolver rs
             (
@@ -344,22 +369,13 @@ namespace
             {
                 // Face j: the bottom of cylinder j, on the plane (j = 0) or
                 // on the top of cylinder j - 1
-                const point centre(2*j*a*nrm);
-                for (label k = 0; k < 6; ++k)
-                {
-                    const scalar angle = 2*M_PI*(k + 0.3)/6;
-                    contact c;
-                    c.i = j;
-                    c.k = j == 0 ? label(tubeBottom) : j - 1;
-                    c.n = nrm;
-                    c.mu = j == 0 ? mu : muTower;
-                    c.p =
-                        centre
-                      + a*(Foam::cos(angle)*e1 + Foam::sin(angle)*e2);
-                    c.ri = c.p - bs[j].x();
-                    c.rk = j == 0 ? vector(c.p) : c.p - bs[j - 1].x();
-                    cs.append(c);
-                }
+                appendFaceContacts
+                (
+                    cs, 2*j*a*nrm, nrm, e1, e2, j, bs[j].x(),
+                    j == 0 ? label(tubeBottom) : j - 1,
+                    j == 0 ? point(Zero) : bs[j - 1].x(),
+                    j == 0 ? mu : muTower
+                );
             }
 
             const restingContactSolver rs
