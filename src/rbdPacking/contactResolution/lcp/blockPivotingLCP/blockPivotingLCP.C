@@ -224,7 +224,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     Eigen::VectorXd& f
 ) const
 {
-    return solve(A, factors, b, guess, f, nullptr);
+    return solve(A, factors, b, guess, f, nullptr, true);
 }
 
 
@@ -238,7 +238,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     activeSetFactor& kept
 ) const
 {
-    return solve(A, factors, b, guess, f, &kept);
+    return solve(A, factors, b, guess, f, &kept, true);
 }
 
 
@@ -249,9 +249,28 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     const Eigen::VectorXd& b,
     const std::vector<bool>& guess,
     Eigen::VectorXd& f,
-    activeSetFactor* kept
+    activeSetFactor& kept,
+    const bool exchanges
 ) const
 {
+    return solve(A, factors, b, guess, f, &kept, exchanges);
+}
+
+
+Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
+(
+    const Eigen::SparseMatrix<double>& A,
+    const lcpFactors& factors,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    Eigen::VectorXd& f,
+    activeSetFactor* kept,
+    const bool exchangesAsked
+) const
+{
+    // The exchanges are the solver where the interior point is off
+    const bool exchanges = exchangesAsked || interiorPointIterations_ <= 0;
+
     typedef Eigen::SparseMatrix<double> sparseMatrix;
 
     const label n = b.size();
@@ -333,7 +352,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     std::vector<label> pos(n), members, infeasible;
     activeSetSystem& system = kept ? kept->system : system_;
     preorderedLDLT& ldlt = kept ? kept->ldlt : ldlt_;
-    Eigen::VectorXd z(n), w(n);
+    Eigen::VectorXd z(Eigen::VectorXd::Zero(n)), w(n);
 
     // Judice-Pires: block exchanges while the number of infeasible
     // contacts falls (or within three chances); once they cycle, the
@@ -345,7 +364,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
       ? min(maxIterations_, fallbackIterations_)
       : maxIterations_;
 
-    for (label iter = 0; iter < iterations; ++iter)
+    for (label iter = 0; exchanges && iter < iterations; ++iter)
     {
         members.clear();
         for (label k = 0; k < n; ++k)
@@ -424,14 +443,18 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         }
     }
 
+    // Without exchanges no candidate (f = 0 would beat any answer of the
+    // interior point: violation() is relative to max |f|)
     f = z.cwiseMax(0.0);
-    scalar v = violation(A, b, f);
+    scalar v = exchanges ? violation(A, b, f) : GREAT;
 
-    // Block exchanges cycled or ran out: the interior point
+    // Block exchanges cycled, ran out or were not asked for: the interior
+    // point
     if (!result.converged && interiorPointIterations_ > 0)
     {
         Eigen::VectorXd fi;
-        result.iterations += interiorPoint(A, body.get(), b, diag, fi);
+        result.newtonSteps = interiorPoint(A, body.get(), b, diag, fi);
+        result.iterations += result.newtonSteps;
         const scalar vi = violation(A, b, fi);
         if (vi <= tolerance_ || vi < v)
         {
@@ -439,6 +462,18 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             v = vi;
             result.converged = vi <= tolerance_;
         }
+    }
+
+    // Asked for the interior point alone, which did not solve it: the
+    // block exchanges after all, from the guess (and the fallback), as
+    // without the request
+    if (!exchanges && !result.converged)
+    {
+        const lcpResult first = result;
+        result = solve(A, factors, b, guess, f, kept, true);
+        result.iterations += first.iterations;
+        result.newtonSteps += first.newtonSteps;
+        return result;
     }
 
     // A small problem that is still not solved, and not even within

@@ -70,6 +70,21 @@ Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
 }
 
 
+Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
+(
+    const Eigen::SparseMatrix<double>& A,
+    const lcpFactors& factors,
+    const Eigen::VectorXd& b,
+    const std::vector<bool>& guess,
+    Eigen::VectorXd& f,
+    activeSetFactor& kept,
+    const bool
+) const
+{
+    return solve(A, factors, b, guess, f, kept);
+}
+
+
 Foam::scalar Foam::rbd::lcpSolver::violation
 (
     const Eigen::MatrixXd& A,

@@ -151,6 +151,65 @@ TEST(blockPivotingLCP, interiorPointMatchesEnumeration)
 }
 
 
+TEST(blockPivotingLCP, withoutExchangesTheInteriorPointAnswers)
+{
+    // exchanges false (exchangeRecord: a large island whose exchanges
+    // have not been converging): the interior point at once, which says
+    // so (newtonSteps), and the block exchanges only where it fails; the
+    // answer agrees with enumeration either way. With exchanges, a
+    // regular problem is solved by them alone. With the interior point
+    // off, exchanges false is not heard: the exchanges are the solver
+    const rbd::blockPivotingLCP solver(parse(noBaraffDict));
+    const rbd::blockPivotingLCP pure(parse(pureDict));
+    const rbd::enumerationLCP reference(dictionary::null);
+    rng gen(91);
+    label interiorAlone = 0;
+    const label trials = 60;
+    for (int trial = 0; trial < trials; ++trial)
+    {
+        const problem p =
+            trial % 2 == 0 ? randomProblem(gen, kind::regular)
+          : randomProblem(gen, kind::overdetermined, 10);
+        const Eigen::SparseMatrix<double> A(p.A.sparseView());
+        const rbd::lcpFactors none;
+        Vec fRef;
+        ASSERT_TRUE(reference.solve(p.A, p.b, fRef).converged) << trial;
+        const double scale = wScale(p, fRef);
+
+        rbd::activeSetFactor kept;
+        Vec f;
+        const rbd::lcpResult r =
+            solver.solve(A, none, p.b, {}, f, kept, false);
+        EXPECT_TRUE(r.converged) << trial;
+        EXPECT_GT(r.newtonSteps, 0) << trial;
+        // The interior point alone, unless it failed (a few of the
+        // smallest problems: then the exchanges after all)
+        interiorAlone += r.iterations == r.newtonSteps;
+        EXPECT_GE(f.minCoeff(), 0) << trial;
+        EXPECT_LE((w(p, f) - w(p, fRef)).cwiseAbs().maxCoeff(), 1e-6*scale)
+            << trial;
+
+        if (trial % 2 == 0)
+        {
+            Vec fx;
+            const rbd::lcpResult rx =
+                solver.solve(A, none, p.b, {}, fx, kept, true);
+            EXPECT_TRUE(rx.converged) << trial;
+            EXPECT_EQ(rx.newtonSteps, 0) << trial;
+        }
+
+        Vec fp;
+        const rbd::lcpResult rp = pure.solve(A, none, p.b, {}, fp, kept, false);
+        EXPECT_EQ(rp.newtonSteps, 0) << trial;
+        EXPECT_GT(rp.iterations, 0) << trial;
+    }
+    std::cout
+        << "[ measured ] the interior point alone solved " << interiorAlone
+        << " of " << trials << std::endl;
+    EXPECT_GT(interiorAlone, trials/2);
+}
+
+
 TEST(blockPivotingLCP, bodySpaceMatchesEnumeration)
 {
     // Two bodies, 13-15 contacts (d = 12 < n): the block exchanges and the
