@@ -64,10 +64,12 @@ void Foam::rbd::restingContactSolver::normalPass
 {
     const std::vector<label>& island = islands_.contacts(s);
     Eigen::VectorXd phi;
+    // Pass 1 (assembled anew) keeps the record of its exchanges; pass 2
+    // (the same matrix, friction in B) always starts with them
     normalRows_.solve
     (
         problem, s, island, Fb, tb, assembled, assembly_, *solver_, active_,
-        res, phi
+        assembled ? nullptr : &normalExchanges_, res, phi
     );
     for (size_t a = 0; a < island.size(); ++a)
     {
@@ -122,7 +124,7 @@ void Foam::rbd::restingContactSolver::frictionStage
          && coupledSolve_.solve
             (
                 problem, island, Fext, tauExt, buf_.Ftot, buf_.tauTot,
-                assembly_, phiAll, friction, res
+                assembly_, boxedExchanges_, phiAll, friction, res
             )
         )
         {
@@ -289,6 +291,10 @@ void Foam::rbd::restingContactSolver::writeState(stateWriter& out) const
     {
         out.put(p.key).put(p.body).put(p.local).put(p.active);
     }
+    for (const exchangeRecord* r : {&normalExchanges_, &boxedExchanges_})
+    {
+        out.put(r->share()).put(r->skipped());
+    }
 }
 
 
@@ -310,6 +316,13 @@ void Foam::rbd::restingContactSolver::readState(stateReader& in)
         in.get(p.key).get(p.body).get(p.local).get(p.active);
     }
     active_.set(pairs, points);
+    for (exchangeRecord* r : {&normalExchanges_, &boxedExchanges_})
+    {
+        scalar share = 0;
+        label skipped = 0;
+        in.get(share).get(skipped);
+        r->set(share, skipped);
+    }
 }
 
 

@@ -122,6 +122,7 @@ bool Foam::rbd::coupledFriction::solve
     UList<vector>& Ftot,
     UList<vector>& tauTot,
     lcpAssembly& assembly,
+    exchangeRecord& record,
     List<scalar>& phiAll,
     List<vector>& friction,
     restingSolveResult& res
@@ -222,7 +223,10 @@ bool Foam::rbd::coupledFriction::solve
     // 100-cylinder heap, against 5-50 % on islands of 1-8 bodies
     // (docs/restingSolveCost.md, "Twenty-third session")
     const bool large = assembly.movingBodies() >= interiorPointBodies;
-    bool exchanges = true;
+    // Its first round tries the exchanges first only where they have been
+    // converging on such islands (exchangeRecord)
+    bool exchanges = !large || record.tryExchanges();
+    const bool tracked = large && exchanges;
     // Such an island takes at most largeIslandRounds rounds: on a
     // 100-cylinder heap its rounds never settle (the redundant contacts'
     // normal forces shift from round to round), the friction above mu
@@ -253,6 +257,10 @@ bool Foam::rbd::coupledFriction::solve
         const lcpResult lr =
             boxed_.solve(A, body.get(), B, lo, hi, sides, x, exchanges);
         res.iterations += lr.iterations;
+        if (round == 0 && tracked)
+        {
+            record.record(lr.newtonSteps == 0);
+        }
         exchanges = exchanges && (lr.newtonSteps == 0 || !large);
         if (!(lr.maxViolation <= lcpSolver::usableViolation))
         {

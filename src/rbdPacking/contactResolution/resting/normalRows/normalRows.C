@@ -4,6 +4,7 @@
 
 #include "normalRows.H"
 #include "collisionResolver.H"
+#include "coupledFriction.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -97,6 +98,7 @@ void Foam::rbd::normalRows::solve
     lcpAssembly& assembly,
     const lcpSolver& solver,
     const warmStart& active,
+    exchangeRecord* record,
     restingSolveResult& res,
     Eigen::VectorXd& phi
 )
@@ -142,9 +144,19 @@ void Foam::rbd::normalRows::solve
         guess[a] = active.guess(cs[a], contacts[cs[a]], B(a) < 0);
     }
 
+    // On a large island, the block exchanges first only where they have
+    // been converging (exchangeRecord)
+    const bool tracked =
+        record && !assembled
+     && assembly.movingBodies() >= coupledFriction::interiorPointBodies;
+    const bool exchanges = !tracked || record->tryExchanges();
     phi.resize(n);
     const lcpResult lr =
-        solver.solve(A, sys.factors, B, guess, phi, *sys.kept);
+        solver.solve(A, sys.factors, B, guess, phi, *sys.kept, exchanges);
+    if (tracked && exchanges)
+    {
+        record->record(lr.converged && lr.newtonSteps == 0);
+    }
     res.iterations += lr.iterations;
     res.converged = res.converged && lr.converged;
     res.maxViolation = max(res.maxViolation, lr.maxViolation);
