@@ -64,12 +64,10 @@ void Foam::rbd::restingContactSolver::normalPass
 {
     const std::vector<label>& island = islands_.contacts(s);
     Eigen::VectorXd phi;
-    // Pass 1 (assembled anew) keeps the record of its exchanges; pass 2
-    // (the same matrix, friction in B) always starts with them
     normalRows_.solve
     (
         problem, s, island, Fb, tb, assembled, assembly_, *solver_, active_,
-        assembled ? nullptr : &normalExchanges_, res, phi
+        normalExchanges_, res, phi
     );
     for (size_t a = 0; a < island.size(); ++a)
     {

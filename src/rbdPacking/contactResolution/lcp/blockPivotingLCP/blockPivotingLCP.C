@@ -235,20 +235,6 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
     const Eigen::VectorXd& b,
     const std::vector<bool>& guess,
     Eigen::VectorXd& f,
-    activeSetFactor& kept
-) const
-{
-    return solve(A, factors, b, guess, f, &kept, true);
-}
-
-
-Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
-(
-    const Eigen::SparseMatrix<double>& A,
-    const lcpFactors& factors,
-    const Eigen::VectorXd& b,
-    const std::vector<bool>& guess,
-    Eigen::VectorXd& f,
     activeSetFactor& kept,
     const bool exchanges
 ) const

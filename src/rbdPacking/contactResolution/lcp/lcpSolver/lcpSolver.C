@@ -63,25 +63,11 @@ Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
     const Eigen::VectorXd& b,
     const std::vector<bool>& guess,
     Eigen::VectorXd& f,
-    activeSetFactor&
-) const
-{
-    return solve(A, factors, b, guess, f);
-}
-
-
-Foam::rbd::lcpResult Foam::rbd::lcpSolver::solve
-(
-    const Eigen::SparseMatrix<double>& A,
-    const lcpFactors& factors,
-    const Eigen::VectorXd& b,
-    const std::vector<bool>& guess,
-    Eigen::VectorXd& f,
-    activeSetFactor& kept,
+    activeSetFactor&,
     const bool
 ) const
 {
-    return solve(A, factors, b, guess, f, kept);
+    return solve(A, factors, b, guess, f);
 }
 
 

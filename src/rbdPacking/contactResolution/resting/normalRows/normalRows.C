@@ -98,7 +98,7 @@ void Foam::rbd::normalRows::solve
     lcpAssembly& assembly,
     const lcpSolver& solver,
     const warmStart& active,
-    exchangeRecord* record,
+    exchangeRecord& record,
     restingSolveResult& res,
     Eigen::VectorXd& phi
 )
@@ -147,15 +147,15 @@ void Foam::rbd::normalRows::solve
     // On a large island, the block exchanges first only where they have
     // been converging (exchangeRecord)
     const bool tracked =
-        record && !assembled
+        !assembled
      && assembly.movingBodies() >= coupledFriction::interiorPointBodies;
-    const bool exchanges = !tracked || record->tryExchanges();
+    const bool exchanges = !tracked || record.tryExchanges();
     phi.resize(n);
     const lcpResult lr =
         solver.solve(A, sys.factors, B, guess, phi, *sys.kept, exchanges);
     if (tracked && exchanges)
     {
-        record->record(lr.converged && lr.newtonSteps == 0);
+        record.record(lr.converged && lr.newtonSteps == 0);
     }
     res.iterations += lr.iterations;
     res.converged = res.converged && lr.converged;
