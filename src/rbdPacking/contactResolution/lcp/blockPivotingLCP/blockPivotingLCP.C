@@ -504,13 +504,23 @@ Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
     const label n = b.size();
     const scalar bRef = b.cwiseAbs().maxCoeff();
 
-    // Strictly positive start on the problem's scales: forces that would
-    // cancel the largest b on the stiffest contact, gaps of that b
-    f = Eigen::VectorXd::Constant(n, bRef/diag.maxCoeff());
+    // Strictly positive start on the problem's scales: d, the largest
+    // acceleration the forces must cancel (max -b_i; max |b| if none is
+    // negative), not max |b|, which contacts within the band but apart
+    // set (b = 2 (gap + h v_n)/h^2 + ..., up to 2e6 m/s^2 in a heap at
+    // h = 2.4e-5 s: 21.8 Newton steps a solve from that scale, 7.5 from
+    // this one, docs/restingSolveCost.md, "Twenty-sixth session").
+    // w: the start's A f + b where positive, plus d; then f_i = d^2/(w_i
+    // max A_ii), so that every product f_i w_i is the same
+    const scalar bNeg = -b.minCoeff();
+    const scalar d = bNeg > 0 ? bNeg : max(bRef, VSMALL);
+    const scalar fScale = d/diag.maxCoeff();
+    f = Eigen::VectorXd::Constant(n, fScale);
     Eigen::VectorXd w
     (
-        (A*f + b).cwiseMax(0.0) + Eigen::VectorXd::Constant(n, bRef)
+        (A*f + b).cwiseMax(0.0) + Eigen::VectorXd::Constant(n, d)
     );
+    f = (fScale*d)*w.cwiseInverse();
 
     newtonSystem newton(A, body);
 

@@ -80,6 +80,25 @@ Foam::scalar Foam::rbd::boxedBlockPivoting::violation
 
 
 
+Foam::scalar Foam::rbd::boxedBlockPivoting::startScale
+(
+    const Eigen::VectorXd& b,
+    const Eigen::VectorXd& lo,
+    const Eigen::VectorXd& hi
+)
+{
+    scalar demand = 0;
+    for (Eigen::Index i = 0; i < b.size(); ++i)
+    {
+        if (lo(i) < hi(i))
+        {
+            demand = max(demand, std::isfinite(hi(i)) ? mag(b(i)) : -b(i));
+        }
+    }
+    return demand > 0 ? demand : max(b.cwiseAbs().maxCoeff(), VSMALL);
+}
+
+
 Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
 (
     const Eigen::SparseMatrix<double>& A,
@@ -94,8 +113,6 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
     typedef Eigen::SparseMatrix<double> sparseMatrix;
 
     const label n = b.size();
-    const scalar bRef = max(b.cwiseAbs().maxCoeff(), VSMALL);
-    const scalar xScale = bRef/diagMax;
 
     // The variables that move (lo < hi), and which have an upper bound
     std::vector<bool> moves(n), upper(n);
@@ -112,30 +129,52 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
         return 0;
     }
 
-    // Strictly interior start on the problem's scales: the middle of a
-    // finite box, xScale above an open one; multipliers of b's scale
+    auto product = [&](const Eigen::VectorXd& y)
+    {
+        return body ? body->product(y) : Eigen::VectorXd(A*y);
+    };
+
+    // The start's scales: the largest acceleration the forces must cancel
+    // (startScale), not max |b|: a contact within the band but apart has
+    // b = 2 (gap + h v_n)/h^2 + ..., up to 2e6 m/s^2 at h = 2.4e-5 s in
+    // a heap, it carries nothing, and a start on its scale left the Newton
+    // steps 13 orders of s z to reduce (20.5 steps a solve on the heap of
+    // docs/restingSolveCost.md, "Twenty-sixth session"; 14 from this one)
+    const scalar demand = startScale(b, lo, hi);
+    const scalar xScale = demand/diagMax;
+
+    // Strictly interior start: the middle of a finite box, xScale above an
+    // open bound; multipliers of the start's w (z1 - z2 = w where they
+    // can) plus the demand, and an open bound's gap s1 then shrunk to
+    // xScale demand/z1 so that s1 z1 is the same for all such rows
     Eigen::VectorXd s1(Eigen::VectorXd::Ones(n)), s2(s1), z1(s1), z2(s1);
+    for (label i = 0; i < n; ++i)
+    {
+        if (moves[i])
+        {
+            s1(i) = upper[i] ? 0.5*(hi(i) - lo(i)) : xScale;
+            x(i) = lo(i) + s1(i);
+            s2(i) = s1(i);
+        }
+    }
+    const Eigen::VectorXd w0(product(x) + b);
     for (label i = 0; i < n; ++i)
     {
         if (!moves[i])
         {
             continue;
         }
-        const scalar half = upper[i] ? 0.5*(hi(i) - lo(i)) : xScale;
-        x(i) = lo(i) + half;
-        s1(i) = half;
-        z1(i) = bRef;
+        z1(i) = max(w0(i), scalar(0)) + demand;
         if (upper[i])
         {
-            s2(i) = half;
-            z2(i) = bRef;
+            z2(i) = max(-w0(i), scalar(0)) + demand;
+        }
+        else
+        {
+            s1(i) = xScale*demand/z1(i);
+            x(i) = lo(i) + s1(i);
         }
     }
-
-    auto product = [&](const Eigen::VectorXd& y)
-    {
-        return body ? body->product(y) : Eigen::VectorXd(A*y);
-    };
 
     // The Newton matrix A + D on the moving variables: in body space, or
     // a sparse LDL^T of its pattern (analysed once)

@@ -210,6 +210,77 @@ TEST(blockPivotingLCP, withoutExchangesTheInteriorPointAnswers)
 }
 
 
+TEST(blockPivotingLCP, interiorPointStartsOnTheScaleOfTheLoad)
+{
+    // Contacts within the proximity band but apart enter the normal pass
+    // with b = 2 (gap + h v_n)/h^2, up to 2e6 m/s^2 at the steps of a
+    // heap under a rain of pellets; they carry nothing. The interior
+    // point starts on the scale of the load (max -b_i), so rows of that
+    // kind carry no force and cost at most two more Newton steps than the
+    // problem without them (a start on max |b| took about ten more:
+    // docs/restingSolveCost.md, "Twenty-sixth session")
+    const rbd::blockPivotingLCP solver(parse(noBaraffDict));
+    rng gen(93);
+    for (int trial = 0; trial < 20; ++trial)
+    {
+        const std::string what = "trial " + std::to_string(trial);
+        const int nBodies = uniformInt(gen, 2, 4);
+        const int m = 8*nBodies;
+        const heap full(randomHeap(gen, nBodies, m, 1e-5));
+        problem withApart(full.p);
+        std::vector<int> kept;
+        for (int r = 0; r < m; ++r)
+        {
+            if (r % 3 == 1)
+            {
+                withApart.b(r) = 2e6;
+            }
+            else
+            {
+                kept.push_back(r);
+            }
+        }
+        const int k = kept.size();
+        problem touching{Mat(k, k), Vec(k)};
+        for (int a = 0; a < k; ++a)
+        {
+            touching.b(a) = full.p.b(kept[a]);
+            for (int c = 0; c < k; ++c)
+            {
+                touching.A(a, c) = full.p.A(kept[a], kept[c]);
+            }
+        }
+
+        const rbd::lcpFactors none;
+        rbd::activeSetFactor factor;
+        Vec f, fTouching;
+        const rbd::lcpResult r = solver.solve
+        (
+            withApart.A.sparseView(), none, withApart.b, {}, f, factor,
+            false
+        );
+        const rbd::lcpResult rt = solver.solve
+        (
+            touching.A.sparseView(), none, touching.b, {}, fTouching,
+            factor, false
+        );
+        ASSERT_TRUE(r.converged) << what << ": " << r.maxViolation;
+        ASSERT_TRUE(rt.converged) << what << ": " << rt.maxViolation;
+        // (The touching rows' answers agree only to the tolerance, which
+        // is relative to max |b|: here the apart rows' 2e6)
+        const double fRef = max(fTouching.cwiseAbs().maxCoeff(), 1e-300);
+        for (int r2 = 0; r2 < m; ++r2)
+        {
+            if (r2 % 3 == 1)
+            {
+                EXPECT_LE(f(r2), 1e-9*fRef) << what << ", row " << r2;
+            }
+        }
+        EXPECT_LE(r.newtonSteps, rt.newtonSteps + 2) << what;
+    }
+}
+
+
 TEST(blockPivotingLCP, bodySpaceMatchesEnumeration)
 {
     // Two bodies, 13-15 contacts (d = 12 < n): the block exchanges and the

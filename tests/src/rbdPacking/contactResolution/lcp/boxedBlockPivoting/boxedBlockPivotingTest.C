@@ -367,6 +367,77 @@ TEST(boxedBlockPivoting, withoutExchangesTheInteriorPointAnswersAlone)
 }
 
 
+TEST(boxedBlockPivoting, interiorPointStartsOnTheScaleOfTheLoad)
+{
+    // A third of the contacts within the proximity band but apart: normal
+    // row b + 2e6 m/s^2 (2 (gap + h v_n)/h^2 at a heap's small steps),
+    // no friction (lo = hi = 0: no normal force in the pass before). The
+    // interior point alone gives them no force, at most two Newton steps
+    // dearer than the problem without them (a start on max |b| took about
+    // seven more: docs/restingSolveCost.md, "Twenty-sixth session")
+    const rbd::boxedBlockPivoting solver;
+    rng gen(17);
+    for (int trial = 0; trial < 20; ++trial)
+    {
+        const std::string what = "trial " + std::to_string(trial);
+        const int nContacts = uniformInt(gen, 6, 12);
+        boxedProblem q(randomFrictionProblem(gen, nContacts));
+        std::vector<int> kept;
+        for (int c = 0; c < nContacts; ++c)
+        {
+            if (c % 3 == 1)
+            {
+                q.p.b(3*c) += 2e6;
+                q.lo(3*c + 1) = q.hi(3*c + 1) = 0;
+                q.lo(3*c + 2) = q.hi(3*c + 2) = 0;
+            }
+            else
+            {
+                kept.push_back(3*c);
+                kept.push_back(3*c + 1);
+                kept.push_back(3*c + 2);
+            }
+        }
+        const int k = kept.size();
+        Mat At(k, k);
+        Vec bt(k), lot(k), hit(k);
+        for (int a = 0; a < k; ++a)
+        {
+            bt(a) = q.p.b(kept[a]);
+            lot(a) = q.lo(kept[a]);
+            hit(a) = q.hi(kept[a]);
+            for (int c = 0; c < k; ++c)
+            {
+                At(a, c) = q.p.A(kept[a], kept[c]);
+            }
+        }
+
+        std::vector<rbd::boxedBlockPivoting::side> sides, sidesT;
+        Vec x, xT;
+        const Eigen::SparseMatrix<double> As(q.p.A.sparseView());
+        const Eigen::SparseMatrix<double> AsT(At.sparseView());
+        const rbd::lcpResult r = solver.solve
+        (
+            As, nullptr, q.p.b, q.lo, q.hi, sides, x, false
+        );
+        const rbd::lcpResult rt = solver.solve
+        (
+            AsT, nullptr, bt, lot, hit, sidesT, xT, false
+        );
+        ASSERT_TRUE(r.converged) << what << ": " << r.maxViolation;
+        ASSERT_TRUE(rt.converged) << what << ": " << rt.maxViolation;
+        // (The other rows' answers agree only to the tolerance, which is
+        // relative to max |b|: here the apart rows' 2e6)
+        const double xRef = max(xT.cwiseAbs().maxCoeff(), 1e-300);
+        for (int c = 1; c < nContacts; c += 3)
+        {
+            EXPECT_LE(mag(x(3*c)), 1e-9*xRef) << what << ", contact " << c;
+        }
+        EXPECT_LE(r.newtonSteps, rt.newtonSteps + 2) << what;
+    }
+}
+
+
 TEST(boxedBlockPivoting, keepsFixedVariablesAtTheirBound)
 {
     // lo = hi (friction of a contact without normal force): x = lo, w free
