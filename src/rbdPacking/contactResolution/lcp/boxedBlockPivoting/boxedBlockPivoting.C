@@ -40,13 +40,29 @@ Foam::scalar Foam::rbd::boxedBlockPivoting::violation
     const Eigen::VectorXd& x
 )
 {
-    const label n = b.size();
+    if (b.size() == 0)
+    {
+        return 0;
+    }
+    return violationOnScale(w, lo, hi, x, b.cwiseAbs().maxCoeff());
+}
+
+
+Foam::scalar Foam::rbd::boxedBlockPivoting::violationOnScale
+(
+    const Eigen::VectorXd& w,
+    const Eigen::VectorXd& lo,
+    const Eigen::VectorXd& hi,
+    const Eigen::VectorXd& x,
+    const scalar wRef
+)
+{
+    const label n = w.size();
     if (n == 0)
     {
         return 0;
     }
     const scalar xRef = x.cwiseAbs().maxCoeff();
-    const scalar wRef = b.cwiseAbs().maxCoeff();
     if (!std::isfinite(xRef) || !w.allFinite())
     {
         return GREAT;
@@ -139,9 +155,19 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
     // b = 2 (gap + h v_n)/h^2 + ..., up to 2e6 m/s^2 at h = 2.4e-5 s in
     // a heap, it carries nothing, and a start on its scale left the Newton
     // steps 13 orders of s z to reduce (20.5 steps a solve on the heap of
-    // docs/restingSolveCost.md, "Twenty-sixth session"; 14 from this one)
+    // docs/restingSolveCost.md, "Twenty-sixth session"; 14 from this one
+    // with the same stopping rule)
     const scalar demand = startScale(b, lo, hi);
     const scalar xScale = demand/diagMax;
+
+    // Done when x meets the tolerance on the demand's scale (not on max
+    // |b|, which the contacts apart set: at 2e6 m/s^2 it held the
+    // touching contacts' accelerations only to 2e-3 m/s^2, and from this
+    // start the interior point stopped there), at least loadScaleFloor
+    // max |b| (w's round-off stays below the tolerance); b = 0: as
+    // violation(), no w terms
+    const scalar bMax = b.cwiseAbs().maxCoeff();
+    const scalar wScale = bMax > 0 ? max(demand, loadScaleFloor*bMax) : 0;
 
     // Strictly interior start: the middle of a finite box, xScale above an
     // open bound; multipliers of the start's w (z1 - z2 = w where they
@@ -309,8 +335,8 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
         const Eigen::VectorXd xc(x.cwiseMax(lo).cwiseMin(hi));
         const scalar v =
             xc == x
-          ? violation(w, b, lo, hi, x)
-          : violation(product(xc) + b, b, lo, hi, xc);
+          ? violationOnScale(w, lo, hi, x, wScale)
+          : violationOnScale(product(xc) + b, lo, hi, xc, wScale);
         if (v <= tolerance_)
         {
             break;

@@ -119,13 +119,28 @@ Foam::scalar Foam::rbd::lcpSolver::violation
         return 0;
     }
 
-    const scalar fRef = f.cwiseAbs().maxCoeff();
     scalar wRef = b.cwiseAbs().maxCoeff();
     if (wRef == 0)
     {
-        wRef = aMax*fRef;
+        wRef = aMax*f.cwiseAbs().maxCoeff();
+    }
+    return violationOnScale(w, f, wRef);
+}
+
+
+Foam::scalar Foam::rbd::lcpSolver::violationOnScale
+(
+    const Eigen::VectorXd& w,
+    const Eigen::VectorXd& f,
+    const scalar wRef
+)
+{
+    if (w.size() == 0)
+    {
+        return 0;
     }
 
+    const scalar fRef = f.cwiseAbs().maxCoeff();
     if (!std::isfinite(fRef) || !std::isfinite(wRef) || !w.allFinite())
     {
         return GREAT;
