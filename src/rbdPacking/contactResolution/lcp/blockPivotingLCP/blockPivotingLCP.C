@@ -584,8 +584,19 @@ Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
             best = v;
             bestStep = step;
         }
-        else if (step - bestStep >= stallSteps)
+        else if
+        (
+            step - bestStep >= stallSteps
+         || (
+                step - bestStep >= loadScaleStallSteps
+             && violation(wf, b, f, aMax) <= tolerance_
+            )
+        )
         {
+            // Stalled; or stalled on the load's scale with the tolerance
+            // met on max |b| (round-off keeps the stricter one out of
+            // reach: an island whose load is small against its apart
+            // contacts' b)
             break;
         }
         const scalar mu = f.dot(w)/n;

@@ -333,10 +333,11 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
         // > 0 up to round-off: w serves unless clipping moved it)
         const Eigen::VectorXd w(product(x) + b);
         const Eigen::VectorXd xc(x.cwiseMax(lo).cwiseMin(hi));
-        const scalar v =
-            xc == x
-          ? violationOnScale(w, lo, hi, x, wScale)
-          : violationOnScale(product(xc) + b, lo, hi, xc, wScale);
+        const Eigen::VectorXd wc
+        (
+            xc == x ? w : Eigen::VectorXd(product(xc) + b)
+        );
+        const scalar v = violationOnScale(wc, lo, hi, xc, wScale);
         if (v <= tolerance_)
         {
             break;
@@ -346,8 +347,19 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
             best = v;
             bestStep = step;
         }
-        else if (step - bestStep >= stallSteps)
+        else if
+        (
+            step - bestStep >= stallSteps
+         || (
+                step - bestStep >= loadScaleStallSteps
+             && violationOnScale(wc, lo, hi, xc, bMax) <= tolerance_
+            )
+        )
         {
+            // Stalled; or stalled on the load's scale with the tolerance
+            // met on max |b| (round-off keeps the stricter one out of
+            // reach: an island whose load is small against its apart
+            // contacts' b)
             break;
         }
 
