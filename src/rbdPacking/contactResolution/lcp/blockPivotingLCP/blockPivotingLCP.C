@@ -527,9 +527,8 @@ Foam::label Foam::rbd::blockPivotingLCP::interiorPoint
     // |b|, which the contacts apart set: at 2e6 m/s^2 it held the touching
     // contacts' accelerations only to 2e-3 m/s^2, and from this start the
     // interior point stopped there: the STL pellets of the test suite
-    // then reached 1.8 % dp). d at least loadScaleFloor max |b|: w's
-    // round-off, about 1e-16 max |b| a term, stays below the tolerance
-    const scalar wScale = max(d, loadScaleFloor*bRef);
+    // then reached 1.8 % dp); at least loadScaleFloor max |b|
+    const scalar wScale = stoppingScale(d, bRef);
 
     newtonSystem newton(A, body);
 

@@ -164,10 +164,9 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
     // |b|, which the contacts apart set: at 2e6 m/s^2 it held the
     // touching contacts' accelerations only to 2e-3 m/s^2, and from this
     // start the interior point stopped there), at least loadScaleFloor
-    // max |b| (w's round-off stays below the tolerance); b = 0: as
-    // violation(), no w terms
+    // max |b|; b = 0: as violation(), no w terms
     const scalar bMax = b.cwiseAbs().maxCoeff();
-    const scalar wScale = bMax > 0 ? max(demand, loadScaleFloor*bMax) : 0;
+    const scalar wScale = lcpSolver::stoppingScale(demand, bMax);
 
     // Strictly interior start: the middle of a finite box, xScale above an
     // open bound; multipliers of the start's w (z1 - z2 = w where they
@@ -351,7 +350,7 @@ Foam::label Foam::rbd::boxedBlockPivoting::interiorPoint
         (
             step - bestStep >= stallSteps
          || (
-                step - bestStep >= loadScaleStallSteps
+                step - bestStep >= lcpSolver::loadScaleStallSteps
              && violationOnScale(wc, lo, hi, xc, bMax) <= tolerance_
             )
         )
