@@ -1569,7 +1569,8 @@ void Foam::rbd::packedBed::run()
         << s.lcpFailures << " not converged), " << s.projections
         << " overlap corrections, " << w.broadPhaseBuilds()
         << " neighbour-list updates (" << w.broadPhaseRelisted()
-        << " pellets re-listed)" << nl
+        << " pellets re-listed), " << s.sweptSteps << " swept pellet steps ("
+        << s.sweepStops << " stopped at a touch)" << nl
         << "Wall time " << wallTime_ << " s (CPU " << cpuTime_ << " s)"
         << nl << endl;
 }

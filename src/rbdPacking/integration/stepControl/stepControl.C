@@ -4,6 +4,8 @@
 
 #include "stepControl.H"
 #include "collisionResolver.H"
+#include <algorithm>
+#include <vector>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -70,25 +72,39 @@ Foam::scalar Foam::rbd::stepControl::choose
 (
     const scalar hMax,
     const UList<rigidBody>& bodies,
-    const boolList& fixed,
+    const boolList& held,
     const UList<label>& awake,
+    const UList<label>& swept,
     const UList<labelPair>& activePairs,
     const UList<contact>& contacts,
-    const UList<scalar>& listSlack
+    const UList<scalar>& listSlack,
+    scalarList* bodyBound
 ) const
 {
     const scalar g = g_;
     const scalar epsP = restingVelocity_;
 
+    // Swept pellets stand still for every bound below but their own
+    // unlisted pairs' (the others must not reach where they are unseen)
+    const boolList& fixed = held;
+
     // Spheres: the gaps depend on the centres only, so rotation does not
     // close them; otherwise the surface moves up to |omega| r_b faster
     const bool centreGaps = centreGaps_;
-    auto surfaceSpeed = [&](const label i)
+    auto freeSurfaceSpeed = [&](const label i)
     {
         const rigidBody& b = bodies[i];
-        return
-            fixed[i] ? 0
-          : mag(b.v()) + (centreGaps ? 0 : mag(b.omega())*rb_);
+        return mag(b.v()) + (centreGaps ? 0 : mag(b.omega())*rb_);
+    };
+    auto surfaceSpeed = [&](const label i)
+    {
+        return fixed[i] ? 0 : freeSurfaceSpeed(i);
+    };
+    // ... of which from the turn (a swept pellet's own speed counts for
+    // nothing here, as its centre's)
+    auto spinSpeed = [&](const label i)
+    {
+        return fixed[i] ? 0 : surfaceSpeed(i) - mag(bodies[i].v());
     };
 
     // Time for a gap closing at rate u (acceleration up to a) to shrink to
@@ -101,6 +117,27 @@ Foam::scalar Foam::rbd::stepControl::choose
     };
 
     scalar h = hMax;
+    if (bodyBound)
+    {
+        bodyBound->resize(bodies.size());
+        *bodyBound = hMax;
+    }
+
+    // A bound of bodies i and k (-1: none, or the container)
+    auto bound = [&](const scalar hb, const label i, const label k)
+    {
+        h = min(h, hb);
+        if (bodyBound)
+        {
+            for (const label b : {i, k})
+            {
+                if (b >= 0)
+                {
+                    (*bodyBound)[b] = min((*bodyBound)[b], hb);
+                }
+            }
+        }
+    };
 
     // 1. Pairs the broad phase has not listed are at least cutoff + c_i +
     //    c_k apart (c: each body's slack, skin/2 less its distance from
@@ -110,16 +147,30 @@ Foam::scalar Foam::rbd::stepControl::choose
     //    skin - 2 max|x - X| against twice the fastest body for the body
     //    with the least slack, and a longer one where the fast bodies are
     //    the ones just listed again
+    //    (a swept pellet too: it is swept against its listed neighbours
+    //    only)
     for (const label i : awake)
     {
-        h = min
+        bound
         (
-            h,
             timeToCover
             (
                 g, surfaceSpeed(i),
                 max(0.5*(band_ - 0.5*touch_) + listSlack[i], 0.0)
-            )
+            ),
+            i, -1
+        );
+    }
+    for (const label i : swept)
+    {
+        bound
+        (
+            timeToCover
+            (
+                g, freeSurfaceSpeed(i),
+                max(0.5*(band_ - 0.5*touch_) + listSlack[i], 0.0)
+            ),
+            i, -1
         );
     }
 
@@ -130,7 +181,7 @@ Foam::scalar Foam::rbd::stepControl::choose
     // within the band of its bounding spheres before any feature is
     // within the band of the surfaces, and no feature may then cross the
     // band in one step.
-    auto eq38 = [&](const label i, const label k)
+    auto closeBy = [&](const label i, const label k, const scalar closing)
     {
         const bool kMoves = k >= 0 && !fixed[k];
         const vector vCentres
@@ -156,7 +207,49 @@ Foam::scalar Foam::rbd::stepControl::choose
         // their contact within the band, held by the resting solve.)
         const scalar a =
             centreGaps ? 0 : (k < 0 || !kMoves || fixed[i]) ? g : 2*g;
-        return timeToCover(a, speed, 0.2*band_);
+        return timeToCover(a, speed, closing);
+    };
+    auto eq38 = [&](const label i, const label k)
+    {
+        return closeBy(i, k, 0.2*band_);
+    };
+
+    // A pair within the band of its bounding spheres but with no contact
+    // has no feature within the band (the narrow phase reports every one;
+    // the exact solids' samples may miss a little, see unseenGap): it may
+    // close to half the touching gap, not only by eq 38's 0.2 lambda
+    const scalar unseenClosing =
+        max(unseenGap*band_ - 0.5*touch_, 0.2*band_);
+    std::vector<std::pair<label, label>> inContact;
+    boolList onFloor(centreGaps ? 0 : bodies.size(), false);
+    boolList onWall(centreGaps ? 0 : bodies.size(), false);
+    for (const contact& c : contacts)
+    {
+        if (centreGaps)
+        {
+            break;
+        }
+        if (c.k >= 0)
+        {
+            inContact.emplace_back(min(c.i, c.k), max(c.i, c.k));
+        }
+        else
+        {
+            (c.k == tubeBottom ? onFloor : onWall)[c.i] = true;
+        }
+    }
+    std::sort(inContact.begin(), inContact.end());
+    auto hasContact = [&](const label i, const label k)
+    {
+        return std::binary_search
+        (
+            inContact.begin(), inContact.end(),
+            std::pair<label, label>(min(i, k), max(i, k))
+        );
+    };
+    auto withinBand = [&](const label i, const label k, const bool seen)
+    {
+        return closeBy(i, k, seen ? 0.2*band_ : unseenClosing);
     };
 
     // 2. Listed pairs apart by more than the band: their bounding spheres
@@ -165,6 +258,11 @@ Foam::scalar Foam::rbd::stepControl::choose
     {
         const label i = pr.first();
         const label k = pr.second();
+        if (fixed[i] && fixed[k])
+        {
+            // A swept pellet and a sleeper
+            continue;
+        }
         const vector d(bodies[i].x() - bodies[k].x());
         const scalar dist = mag(d);
         const scalar gap = dist - 2*rb_;
@@ -175,15 +273,18 @@ Foam::scalar Foam::rbd::stepControl::choose
                 (fixed[i] ? Zero : bodies[i].v())
               - (fixed[k] ? Zero : bodies[k].v())
             );
-            const scalar u =
-              - (vRel & d)/dist + surfaceSpeed(i) - mag(bodies[i].v())
-              + surfaceSpeed(k) - mag(bodies[k].v());
+            const scalar u = -(vRel & d)/dist + spinSpeed(i) + spinSpeed(k);
             const scalar a = (fixed[i] || fixed[k]) ? g : 2*g;
-            h = min(h, untilTouching(gap, u, a));
+            bound(untilTouching(gap, u, a), i, k);
         }
         else if (!centreGaps)
         {
-            h = min(h, fixed[i] ? eq38(k, i) : eq38(i, k));
+            const bool seen = hasContact(i, k);
+            bound
+            (
+                fixed[i] ? withinBand(k, i, seen) : withinBand(i, k, seen),
+                i, k
+            );
         }
     }
 
@@ -191,16 +292,20 @@ Foam::scalar Foam::rbd::stepControl::choose
     const scalar R = tubeRadius_;
     for (const label i : awake)
     {
+        if (fixed[i])
+        {
+            continue;
+        }
         const rigidBody& b = bodies[i];
-        const scalar spin = surfaceSpeed(i) - mag(b.v());
+        const scalar spin = spinSpeed(i);
         const scalar zGap = b.x().z() - rb_;
         if (zGap > band_)
         {
-            h = min(h, untilTouching(zGap, -b.v().z() + spin, g));
+            bound(untilTouching(zGap, -b.v().z() + spin, g), i, -1);
         }
         else if (!centreGaps)
         {
-            h = min(h, eq38(i, tubeBottom));
+            bound(withinBand(i, tubeBottom, onFloor[i]), i, -1);
         }
         const vector rho(b.x().x(), b.x().y(), 0);
         const scalar rhoMag = mag(rho);
@@ -211,7 +316,7 @@ Foam::scalar Foam::rbd::stepControl::choose
             if (rhoMag > VSMALL)
             {
                 const scalar u = (b.v() & rho)/rhoMag + spin;
-                h = min(h, untilTouching(wallGap, u, g));
+                bound(untilTouching(wallGap, u, g), i, -1);
             }
 
             // The wall is concave: a pellet moving along it closes the gap
@@ -222,22 +327,26 @@ Foam::scalar Foam::rbd::stepControl::choose
             // it, a sphere skimming the wall of a 31 mm tube at 1.1 m/s
             // went 4e-5 m into it in one 1 ms step.
             const vector vH(b.v().x(), b.v().y(), 0);
-            h = min
+            bound
             (
-                h,
-                timeToLeaveCircle(rho, vH, R - rb_ - 0.5*touch_)
+                timeToLeaveCircle(rho, vH, R - rb_ - 0.5*touch_), i, -1
             );
         }
         else if (!centreGaps)
         {
             // Within the band (or on the axis): eq 38
-            h = min(h, eq38(i, tubeWall));
+            bound(withinBand(i, tubeWall, onWall[i]), i, -1);
         }
     }
 
     // 3. Contacts within the band
     for (const contact& c : contacts)
     {
+        if (fixed[c.i] && (c.k < 0 || fixed[c.k]))
+        {
+            // A swept pellet's contact with a sleeper or the container
+            continue;
+        }
         const vector vRel
         (
             collisionResolver::relativeVelocity(c, bodies, fixed)
@@ -258,7 +367,7 @@ Foam::scalar Foam::rbd::stepControl::choose
         // On the 500-sphere bed: 30 % fewer steps (docs/loadingSpeed.md)
         if (!centreGaps || c.k == tubeWall)
         {
-            h = min(h, eq38(c.i, c.k));
+            bound(eq38(c.i, c.k), c.i, c.k);
         }
 
         // Approaching contacts stop at the touching gap
@@ -268,13 +377,13 @@ Foam::scalar Foam::rbd::stepControl::choose
             if (vn < -epsP)
             {
                 // Colliding soon: gravity counted
-                h = min(h, untilTouching(c.gap, -vn, g));
+                bound(untilTouching(c.gap, -vn, g), c.i, c.k);
             }
             else if (vn < 0)
             {
                 // Resting approach: the resting-contact solve holds the
                 // acceleration, the step bounds the closing velocity
-                h = min(h, untilTouching(c.gap, -vn, 0));
+                bound(untilTouching(c.gap, -vn, 0), c.i, c.k);
             }
         }
     }

@@ -15,10 +15,11 @@ namespace
 {
     //- The format's name and version
     const std::string magic("rbdPacking checkpoint");
-    const Foam::label version = 6;  // 3: the run's counters in 64 bits;
+    const Foam::label version = 7;  // 3: the run's counters in 64 bits;
                                     // 4: the release overlap; 5: the
                                     // resting solve's contact points;
-                                    // 6: its exchange records
+                                    // 6: its exchange records; 7: the
+                                    // swept pellets' counters
 
     //- Written as a label: read back the same only with the same byte order
     const Foam::label byteOrderMark = 0x01020304;

@@ -34,7 +34,7 @@ const Foam::wordList Foam::rbd::simulationControls::knownEntries
     "settleTime", "settleEnergy", "logInterval", "checkpointInterval",
     "writeInterval", "threads",
     "lcpSolver", "restingCompliance", "contactModel", "restingFriction",
-    "frictionRounds", "preset"
+    "frictionRounds", "sweepSpeed", "preset"
 });
 
 
@@ -185,6 +185,8 @@ Foam::rbd::simulationControls::simulationControls
             1, 100
         )
     ),
+    sweepSpeed(getNonNegativeOrDefault(d, "sweepSpeed", 0, "m/s",
+        maxWakeVelocity)),
     preset(d.getOrDefault<word>("preset", "default")),
     dict(d)
 {
@@ -277,6 +279,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("contactModel", contactModel);
     os.writeEntry("restingFriction", restingFriction);
     os.writeEntry("frictionRounds", frictionRounds);
+    os.writeEntry("sweepSpeed", sweepSpeed);
 }
 
 

@@ -44,6 +44,20 @@ Foam::rbd::world::world
         contactDispatch::pairModel(shape, controls.contactModel) == "sphere",
         container.radius()
     ),
+    sweep_
+    (
+        controls.sweepSpeed, touch_, band_, rb_,
+        contactDispatch::pairModel(shape, controls.contactModel) == "sphere",
+        container.radius()
+    ),
+    swept_(),
+    sweptStart_(),
+    held_(),
+    bodyBound_(),
+    restingContacts_(),
+    sweepNear_(),
+    sweepNearContainer_(false),
+    sweepContacts_(),
     bodies_(),
     fixed_(),
     sleep_
@@ -284,6 +298,56 @@ void Foam::rbd::world::findContacts(const bool withSleepers)
 }
 
 
+Foam::scalar Foam::rbd::world::sweptAdvance
+(
+    const label i,
+    const rigidBody& b
+)
+{
+    scalar d = GREAT;
+    auto seenOrNot = [&]()
+    {
+        scalar gap = GREAT;
+        for (const contact& c : sweepContacts_)
+        {
+            gap = min(gap, c.gap);
+        }
+        return sweep_.advanceFor(gap, !sweepContacts_.empty());
+    };
+    for (const label k : sweepNear_)
+    {
+        const scalar bounding = mag(b.x() - bodies_[k].x()) - 2*rb_;
+        if (bounding >= band_)
+        {
+            d = min(d, sweep_.advanceFor(bounding, false));
+            continue;
+        }
+        sweepContacts_.clear();
+        dispatch_.pelletPair(i, b, k, bodies_[k], sweepContacts_, 0);
+        d = min(d, seenOrNot());
+    }
+    if (sweepNearContainer_)
+    {
+        const scalar bounding = min
+        (
+            b.x().z() - rb_,
+            tube_.radius() - tube::axialDistance(b.x()) - rb_
+        );
+        if (bounding >= band_)
+        {
+            d = min(d, sweep_.advanceFor(bounding, false));
+        }
+        else
+        {
+            sweepContacts_.clear();
+            dispatch_.pelletContainer(i, b, sweepContacts_);
+            d = min(d, seenOrNot());
+        }
+    }
+    return d;
+}
+
+
 void Foam::rbd::world::projectOverlaps()
 {
     stats_.projections +=
@@ -402,12 +466,53 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
 
     // 5. Step length. A step that collapses would stall the run without a
     //    word (1e-18 s seen when the contact tolerance exceeded the band;
-    //    the shortest in the validation beds is ~4e-9 s): stop instead
-    const scalar h = stepControl_.choose
+    //    the shortest in the validation beds is ~4e-9 s): stop instead.
+    //    With sweepSpeed, fast pellets clear of everything are swept
+    //    (pelletSweep): held still for the bounds, they do not bound the
+    //    step. Of the candidates only those are swept whose own bounds (their
+    //    pairs', contacts', container's) lie below the step their sweep
+    //    allows: the others do not bound it, and a sweep costs narrow
+    //    phases. The step of the sweep holds for them unswept too (their
+    //    own bounds are longer, the rest are the same or one-sided)
+    sweep_.select
     (
-        hMax, bodies_, fixed_, awake(), activePairs(), contacts_,
-        neighbours_.slack()
+        bodies_, fixed_, awake(), contacts_, neighbours_.adjacency(), swept_
     );
+    scalar h = stepControl_.choose
+    (
+        hMax, bodies_, fixed_, awake(), labelList(), activePairs(),
+        contacts_, neighbours_.slack(), swept_.size() ? &bodyBound_ : nullptr
+    );
+    if (swept_.size())
+    {
+        held_ = fixed_;
+        for (const label i : swept_)
+        {
+            held_[i] = true;
+        }
+        const scalar hSwept = stepControl_.choose
+        (
+            hMax, bodies_, held_, awake(), swept_, activePairs(), contacts_,
+            neighbours_.slack()
+        );
+        label n = 0;
+        for (const label i : swept_)
+        {
+            if (bodyBound_[i] < hSwept)
+            {
+                swept_[n++] = i;
+            }
+            else
+            {
+                held_[i] = false;
+            }
+        }
+        swept_.resize(n);
+        if (n)
+        {
+            h = hSwept;
+        }
+    }
     const scalar minStep = 1e-12;
     const label maxTinySteps = 1000;
     tinySteps_ = h < minStep && h < hMax ? tinySteps_ + 1 : 0;
@@ -441,15 +546,39 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
         tau_[i] = Zero;
     }
 
-    if (contacts_.size())
+    //    A swept pellet is clear of everything and takes no force: it is held
+    //    like a sleeper, so that the others' contacts with it keep them
+    //    off where it is (its sweep starts there). The solve moves the
+    //    first body of a contact (the awake one first where one sleeps):
+    //    a swept pellet's contact with a moving pellet is turned round,
+    //    its contacts with the container and sleepers move nothing
+    const boolList& held = swept_.size() ? held_ : fixed_;
+    const UList<contact>* resting = &contacts_;
+    if (swept_.size())
+    {
+        restingContacts_.clear();
+        for (const contact& c : contacts_)
+        {
+            if (!held_[c.i])
+            {
+                restingContacts_.append(c);
+            }
+            else if (c.k >= 0 && !held_[c.k])
+            {
+                restingContacts_.append(reversed(c));
+            }
+        }
+        resting = &restingContacts_;
+    }
+    if (resting->size())
     {
         const restingContactSolver::result rr = resting_.solve
         (
-            bodies_, contacts_, fixed_, h, F_, tau_
+            bodies_, *resting, held, h, F_, tau_
         );
         rolling_.apply
         (
-            bodies_, contacts_, resting_.normalForces(), fixed_, h, tau_
+            bodies_, *resting, resting_.normalForces(), held, h, tau_
         );
         ++stats_.restingSolves;
         stats_.lcpIterations += rr.iterations;
@@ -460,10 +589,45 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
         }
     }
 
-    // 7. Integration
+    // 7. Integration, then the swept pellets stopped at their first touch
+    sweptStart_.clear();
+    for (const label i : swept_)
+    {
+        sweptStart_.append(bodies_[i]);
+    }
     for (const label i : awake())
     {
         midpointIntegrator::step(bodies_[i], F_[i], tau_[i], h);
+    }
+    forAll(swept_, j)
+    {
+        // What its bounding sphere comes within the band of along the
+        // path; the others are at least the band away all along
+        const label i = swept_[j];
+        const point& x0 = sweptStart_[j].x();
+        const point& x1 = bodies_[i].x();
+        sweepNear_.clear();
+        for (const label k : neighbours_.adjacency()[i])
+        {
+            if (!sweep_.clearOf(x0, x1, bodies_[k].x(), band_))
+            {
+                sweepNear_.append(k);
+            }
+        }
+        sweepNearContainer_ = !sweep_.clearOfContainer(x0, x1, band_);
+        const scalar s =
+            sweepNear_.empty() && !sweepNearContainer_
+          ? 1
+          : sweep_.sweep
+            (
+                sweptStart_[j], bodies_[i],
+                [&](const rigidBody& b) { return sweptAdvance(i, b); }
+            );
+        ++stats_.sweptSteps;
+        if (s < 1)
+        {
+            ++stats_.sweepStops;
+        }
     }
 
     updateSleep(h);
@@ -574,7 +738,8 @@ void Foam::rbd::world::writeState(stateWriter& out) const
     out.put(s.steps).put(s.collisions).put(s.impulses)
        .put(s.collisionSweeps).put(s.restingSolves).put(s.lcpIterations)
        .put(s.largestIsland).put(s.lcpFailures).put(s.projections)
-       .put(s.maxOverlap).put(s.minStep).put(s.maxCollisionEnergyGain);
+       .put(s.maxOverlap).put(s.minStep).put(s.maxCollisionEnergyGain)
+       .put(s.sweptSteps).put(s.sweepStops);
 }
 
 
@@ -624,7 +789,8 @@ void Foam::rbd::world::readState(stateReader& in)
     in.get(s.steps).get(s.collisions).get(s.impulses)
       .get(s.collisionSweeps).get(s.restingSolves).get(s.lcpIterations)
       .get(s.largestIsland).get(s.lcpFailures).get(s.projections)
-      .get(s.maxOverlap).get(s.minStep).get(s.maxCollisionEnergyGain);
+      .get(s.maxOverlap).get(s.minStep).get(s.maxCollisionEnergyGain)
+      .get(s.sweptSteps).get(s.sweepStops);
 }
 
 

@@ -90,7 +90,7 @@ TEST(stepControl, bodiesAtRestFallAtMostTheUnlistedClearance)
     const scalar clearance = 0.5*r;
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, pairs, contacts,
+        hMax, bs, fixed, awake, labelList(), pairs, contacts,
         scalarList(2, 0.5*clearance)
     );
     EXPECT_DOUBLE_EQ
@@ -104,7 +104,8 @@ TEST(stepControl, bodiesAtRestFallAtMostTheUnlistedClearance)
     (
         control(true).choose
         (
-            hMax, bs, fixed, awake, pairs, contacts, scalarList(2, 0.5)
+            hMax, bs, fixed, awake, labelList(), pairs, contacts,
+            scalarList(2, 0.5)
         ),
         hMax
     );
@@ -132,7 +133,7 @@ TEST(stepControl, eachBodyCoversItsOwnSlack)
 
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, pairs, contacts, slack
+        hMax, bs, fixed, awake, labelList(), pairs, contacts, slack
     );
     const scalar cover = 0.5*(band - 0.5*touch) + skinHalf;
     EXPECT_DOUBLE_EQ(h, stepControl::timeToCover(g, 2, cover));
@@ -164,7 +165,8 @@ TEST(stepControl, approachingListedPairStopsShortOfTouching)
     {
         const scalar h = control(centreGaps).choose
         (
-            hMax, bs, fixed, awake, pairs, contacts, scalarList(bs.size(), 5*r)
+            hMax, bs, fixed, awake, labelList(), pairs, contacts,
+            scalarList(bs.size(), 5*r)
         );
         const scalar gapAfter = gap0 - u*h;
         EXPECT_GT(gapAfter, 0) << "centreGaps " << centreGaps;
@@ -198,7 +200,8 @@ TEST(stepControl, eq38BoundsAContactWithinTheBand)
     // Meshes: eq 38
     const scalar hMesh = control(false).choose
     (
-        hMax, bs, fixed, awake, pairs, contacts, scalarList(bs.size(), 5*r)
+        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+            scalarList(bs.size(), 5*r)
     );
     EXPECT_LE(hMesh, 0.2*band/vRel*(1 + 1e-12));
     EXPECT_GT(hMesh, 0);
@@ -208,7 +211,8 @@ TEST(stepControl, eq38BoundsAContactWithinTheBand)
     // the resting solve holds, which is still positive
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, pairs, contacts, scalarList(bs.size(), 5*r)
+        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+            scalarList(bs.size(), 5*r)
     );
     EXPECT_GT(h, 100*0.2*band/vRel);
     const vector rEnd
@@ -248,7 +252,8 @@ TEST(stepControl, eq38BoundsASphereWithinTheBandOfTheWall)
 
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, pairs, contacts, scalarList(bs.size(), 5*r)
+        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+            scalarList(bs.size(), 5*r)
     );
     EXPECT_LE(h, 0.2*band/v*(1 + 1e-12));
     EXPECT_GT(h, 0);
@@ -272,10 +277,90 @@ TEST(stepControl, sphereSkimmingTheWallStaysInside)
 
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, pairs, contacts, scalarList(bs.size(), 5*r)
+        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+            scalarList(bs.size(), 5*r)
     );
     const point xEnd = x + v*h;
     const scalar rhoEnd = Foam::sqrt(sqr(xEnd.x()) + sqr(xEnd.y()));
     EXPECT_LT(rhoEnd, R - r);
     EXPECT_GT(rhoEnd, R - r - 0.5*touch - 1e-9);
+}
+
+
+TEST(stepControl, aPairWithinTheBandWithoutContactsMayCloseHalfTheBand)
+{
+    // Meshes: bounding spheres within the band (0.5 lambda apart) but no
+    // contact, i.e. no feature within the band: the surfaces are at least
+    // unseenGap lambda apart and may close that to half the touching gap,
+    // not only eq 38's 0.2 lambda; with a contact the pair keeps eq 38
+    const scalar vRel = 3;
+    List<rigidBody> bs(2);
+    bs[0] = sphereAt(point(0.01, 0, 0.05), vector(0, 0.5*vRel, 0));
+    bs[1] = sphereAt
+    (
+        point(0.01 + 2*r + 0.5*band, 0, 0.05), vector(0, -0.5*vRel, 0)
+    );
+    const boolList fixed(2, false);
+    const labelList awake({0, 1});
+    const List<labelPair> pairs({labelPair(0, 1)});
+    const scalarList slack(bs.size(), 5*r);
+
+    const scalar hApart = control(false).choose
+    (
+        hMax, bs, fixed, awake, labelList(), pairs, List<contact>(), slack
+    );
+    const scalar closing = stepControl::unseenGap*band - 0.5*touch;
+    EXPECT_DOUBLE_EQ(hApart, stepControl::timeToCover(2*g, vRel, closing));
+    EXPECT_GT(hApart, 2*0.2*band/vRel);
+
+    List<contact> contacts(1);
+    contacts[0].i = 0;
+    contacts[0].k = 1;
+    contacts[0].n = vector(1, 0, 0);
+    contacts[0].gap = 0.5*band;
+    const scalar hTouching = control(false).choose
+    (
+        hMax, bs, fixed, awake, labelList(), pairs, contacts, slack
+    );
+    EXPECT_LE(hTouching, 0.2*band/vRel*(1 + 1e-12));
+}
+
+
+TEST(stepControl, aSweptPelletIsHeldStillForTheOthers)
+{
+    // A pellet falling at 6 m/s onto one at rest 2 mm below (beyond the
+    // band): unswept, the pair's time to touch bounds the step; swept
+    // (pelletSweep), it stands still for the pair and the container, and
+    // only its own unlisted pairs' bound is left
+    const scalar gap0 = 2e-3;
+    List<rigidBody> bs(2);
+    bs[0] = sphereAt(point(0.01, 0, 0.05 + 2*r + gap0), vector(0, 0, -6));
+    bs[1] = sphereAt(point(0.01, 0, 0.05), Zero);
+    const boolList fixed(2, false);
+    const labelList awake({0, 1});
+    const List<labelPair> pairs({labelPair(0, 1)});
+    const List<contact> contacts;
+    const scalarList slack(bs.size(), 5*r);
+
+    for (const bool centreGaps : {true, false})
+    {
+        const scalar h = control(centreGaps).choose
+        (
+            hMax, bs, fixed, awake, labelList(), pairs, contacts, slack
+        );
+        EXPECT_LT(h, gap0/6);
+
+        boolList held(fixed);
+        held[0] = true;
+        const scalar hSwept = control(centreGaps).choose
+        (
+            hMax, bs, held, awake, labelList({0}), pairs, contacts, slack
+        );
+        EXPECT_DOUBLE_EQ
+        (
+            hSwept,
+            stepControl::timeToCover(g, 6, 0.5*(band - 0.5*touch) + slack[0])
+        ) << "centreGaps " << centreGaps;
+        EXPECT_GT(hSwept, 10*h);
+    }
 }
