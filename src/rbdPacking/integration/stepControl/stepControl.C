@@ -17,6 +17,7 @@ Foam::rbd::stepControl::stepControl
     const scalar touch,
     const scalar boundingRadius,
     const bool centreGaps,
+    const bool exactSolids,
     const scalar tubeRadius
 )
 :
@@ -26,6 +27,7 @@ Foam::rbd::stepControl::stepControl
     touch_(touch),
     rb_(boundingRadius),
     centreGaps_(centreGaps),
+    exactSolids_(exactSolids),
     tubeRadius_(tubeRadius)
 {}
 
@@ -219,13 +221,14 @@ Foam::scalar Foam::rbd::stepControl::choose
     // the exact solids' samples may miss a little, see unseenGap): it may
     // close to half the touching gap, not only by eq 38's 0.2 lambda
     const scalar unseenClosing =
-        max(unseenGap*band_ - 0.5*touch_, 0.2*band_);
+        exactSolids_ ? max(unseenGap*band_ - 0.5*touch_, 0.2*band_)
+      : 0.2*band_;
     std::vector<std::pair<label, label>> inContact;
-    boolList onFloor(centreGaps ? 0 : bodies.size(), false);
-    boolList onWall(centreGaps ? 0 : bodies.size(), false);
+    boolList onFloor(exactSolids_ ? bodies.size() : 0, false);
+    boolList onWall(exactSolids_ ? bodies.size() : 0, false);
     for (const contact& c : contacts)
     {
-        if (centreGaps)
+        if (!exactSolids_)
         {
             break;
         }
@@ -241,7 +244,7 @@ Foam::scalar Foam::rbd::stepControl::choose
     std::sort(inContact.begin(), inContact.end());
     auto hasContact = [&](const label i, const label k)
     {
-        return std::binary_search
+        return !exactSolids_ || std::binary_search
         (
             inContact.begin(), inContact.end(),
             std::pair<label, label>(min(i, k), max(i, k))
@@ -305,7 +308,10 @@ Foam::scalar Foam::rbd::stepControl::choose
         }
         else if (!centreGaps)
         {
-            bound(withinBand(i, tubeBottom, onFloor[i]), i, -1);
+            bound
+            (
+                withinBand(i, tubeBottom, !exactSolids_ || onFloor[i]), i, -1
+            );
         }
         const vector rho(b.x().x(), b.x().y(), 0);
         const scalar rhoMag = mag(rho);
@@ -335,7 +341,10 @@ Foam::scalar Foam::rbd::stepControl::choose
         else if (!centreGaps)
         {
             // Within the band (or on the axis): eq 38
-            bound(withinBand(i, tubeWall, onWall[i]), i, -1);
+            bound
+            (
+                withinBand(i, tubeWall, !exactSolids_ || onWall[i]), i, -1
+            );
         }
     }
 

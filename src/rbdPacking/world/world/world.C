@@ -42,6 +42,7 @@ Foam::rbd::world::world
     (
         controls.gravity, controls.restingVelocity, band_, touch_, rb_,
         contactDispatch::pairModel(shape, controls.contactModel) == "sphere",
+        contactDispatch::pairModel(shape, controls.contactModel) == "prism",
         container.radius()
     ),
     sweep_

@@ -30,9 +30,12 @@ namespace
         return b;
     }
 
-    stepControl control(const bool centreGaps)
+    stepControl control(const bool centreGaps, const bool exactSolids = false)
     {
-        return stepControl(g, epsP, band, touch, r, centreGaps, tubeRadius);
+        return stepControl
+        (
+            g, epsP, band, touch, r, centreGaps, exactSolids, tubeRadius
+        );
     }
 }
 
@@ -289,10 +292,11 @@ TEST(stepControl, sphereSkimmingTheWallStaysInside)
 
 TEST(stepControl, aPairWithinTheBandWithoutContactsMayCloseHalfTheBand)
 {
-    // Meshes: bounding spheres within the band (0.5 lambda apart) but no
-    // contact, i.e. no feature within the band: the surfaces are at least
-    // unseenGap lambda apart and may close that to half the touching gap,
-    // not only eq 38's 0.2 lambda; with a contact the pair keeps eq 38
+    // Exact solids: bounding spheres within the band (0.5 lambda apart)
+    // but no contact, i.e. no feature within the band: the surfaces are
+    // at least unseenGap lambda apart and may close that to half the
+    // touching gap, not only eq 38's 0.2 lambda; with a contact the pair
+    // keeps eq 38, and meshes keep it either way
     const scalar vRel = 3;
     List<rigidBody> bs(2);
     bs[0] = sphereAt(point(0.01, 0, 0.05), vector(0, 0.5*vRel, 0));
@@ -305,10 +309,15 @@ TEST(stepControl, aPairWithinTheBandWithoutContactsMayCloseHalfTheBand)
     const List<labelPair> pairs({labelPair(0, 1)});
     const scalarList slack(bs.size(), 5*r);
 
-    const scalar hApart = control(false).choose
+    const scalar hApart = control(false, true).choose
     (
         hMax, bs, fixed, awake, labelList(), pairs, List<contact>(), slack
     );
+    const scalar hMeshes = control(false, false).choose
+    (
+        hMax, bs, fixed, awake, labelList(), pairs, List<contact>(), slack
+    );
+    EXPECT_LE(hMeshes, 0.2*band/vRel*(1 + 1e-12));
     const scalar closing = stepControl::unseenGap*band - 0.5*touch;
     EXPECT_DOUBLE_EQ(hApart, stepControl::timeToCover(2*g, vRel, closing));
     EXPECT_GT(hApart, 2*0.2*band/vRel);
@@ -318,7 +327,7 @@ TEST(stepControl, aPairWithinTheBandWithoutContactsMayCloseHalfTheBand)
     contacts[0].k = 1;
     contacts[0].n = vector(1, 0, 0);
     contacts[0].gap = 0.5*band;
-    const scalar hTouching = control(false).choose
+    const scalar hTouching = control(false, true).choose
     (
         hMax, bs, fixed, awake, labelList(), pairs, contacts, slack
     );
