@@ -102,11 +102,12 @@ Foam::scalar Foam::rbd::stepControl::choose
     {
         return fixed[i] ? 0 : freeSurfaceSpeed(i);
     };
-    // ... of which from the turn (a swept pellet's own speed counts for
-    // nothing here, as its centre's)
-    auto spinSpeed = [&](const label i)
+    // ... and its centre's speed (a swept pellet's counts for nothing
+    // here, as its surface's): surfaceSpeed - centreSpeed is what its
+    // turn adds
+    auto centreSpeed = [&](const label i)
     {
-        return fixed[i] ? 0 : surfaceSpeed(i) - mag(bodies[i].v());
+        return fixed[i] ? 0 : mag(bodies[i].v());
     };
 
     // Time for a gap closing at rate u (acceleration up to a) to shrink to
@@ -276,7 +277,9 @@ Foam::scalar Foam::rbd::stepControl::choose
                 (fixed[i] ? Zero : bodies[i].v())
               - (fixed[k] ? Zero : bodies[k].v())
             );
-            const scalar u = -(vRel & d)/dist + spinSpeed(i) + spinSpeed(k);
+            const scalar u =
+              - (vRel & d)/dist + surfaceSpeed(i) - centreSpeed(i)
+              + surfaceSpeed(k) - centreSpeed(k);
             const scalar a = (fixed[i] || fixed[k]) ? g : 2*g;
             bound(untilTouching(gap, u, a), i, k);
         }
@@ -300,7 +303,7 @@ Foam::scalar Foam::rbd::stepControl::choose
             continue;
         }
         const rigidBody& b = bodies[i];
-        const scalar spin = spinSpeed(i);
+        const scalar spin = surfaceSpeed(i) - mag(b.v());
         const scalar zGap = b.x().z() - rb_;
         if (zGap > band_)
         {
