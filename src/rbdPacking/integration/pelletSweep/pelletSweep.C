@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pelletSweep.H"
-#include "stepControl.H"
+#include "tube.H"
 #include <algorithm>
 #include <vector>
 
@@ -40,6 +40,7 @@ Foam::rbd::pelletSweep::pelletSweep
     const scalar speed,
     const scalar touch,
     const scalar band,
+    const scalar unseenClosing,
     const scalar boundingRadius,
     const bool centreGaps,
     const scalar tubeRadius
@@ -48,6 +49,7 @@ Foam::rbd::pelletSweep::pelletSweep
     speed_(speed),
     touch_(touch),
     band_(band),
+    unseenClosing_(unseenClosing),
     rb_(boundingRadius),
     centreGaps_(centreGaps),
     tubeRadius_(tubeRadius)
@@ -70,7 +72,7 @@ Foam::scalar Foam::rbd::pelletSweep::advanceFor
 {
     if (!seen)
     {
-        return max(gap, stepControl::unseenGap*band_) - 0.5*touch_;
+        return max(gap - 0.5*touch_, unseenClosing_);
     }
     return gap <= touch_ ? 0 : min(gap - 0.5*touch_, 0.2*band_);
 }
@@ -101,8 +103,11 @@ Foam::scalar Foam::rbd::pelletSweep::relativeSpeed
         }
         u = max(u, uk);
     }
-    const scalar rho = Foam::sqrt(sqr(b.x().x()) + sqr(b.x().y()));
-    if (b.x().z() < 2*rb_ || rho + 2*rb_ > tubeRadius_)
+    if
+    (
+        b.x().z() < 2*rb_
+     || tube::axialDistance(b.x()) + 2*rb_ > tubeRadius_
+    )
     {
         u = max(u, surfaceSpeed(b));
     }
@@ -136,13 +141,10 @@ bool Foam::rbd::pelletSweep::clearOfContainer
 {
     // Height and distance from the axis are extreme at the ends (the
     // latter convex along the segment)
-    auto rho = [](const point& x)
-    {
-        return Foam::sqrt(sqr(x.x()) + sqr(x.y()));
-    };
     return
         min(x0.z(), x1.z()) - rb_ >= gap
-     && tubeRadius_ - max(rho(x0), rho(x1)) - rb_ >= gap;
+     && tubeRadius_
+      - max(tube::axialDistance(x0), tube::axialDistance(x1)) - rb_ >= gap;
 }
 
 

@@ -70,13 +70,21 @@ Foam::scalar Foam::rbd::stepControl::timeToLeaveCircle
 }
 
 
+Foam::scalar Foam::rbd::stepControl::unseenClosing() const
+{
+    return
+        exactSolids_
+      ? max(unseenGap*band_ - 0.5*touch_, 0.2*band_)
+      : 0.2*band_;
+}
+
+
 Foam::scalar Foam::rbd::stepControl::choose
 (
     const scalar hMax,
     const UList<rigidBody>& bodies,
     const boolList& held,
     const UList<label>& awake,
-    const UList<label>& swept,
     const UList<labelPair>& activePairs,
     const UList<contact>& contacts,
     const UList<scalar>& listSlack,
@@ -150,21 +158,9 @@ Foam::scalar Foam::rbd::stepControl::choose
     //    skin - 2 max|x - X| against twice the fastest body for the body
     //    with the least slack, and a longer one where the fast bodies are
     //    the ones just listed again
-    //    (a swept pellet too: it is swept against its listed neighbours
-    //    only)
+    //    (a swept pellet too, at its own speed: it is swept against its
+    //    listed neighbours only; the awake are held only where swept)
     for (const label i : awake)
-    {
-        bound
-        (
-            timeToCover
-            (
-                g, surfaceSpeed(i),
-                max(0.5*(band_ - 0.5*touch_) + listSlack[i], 0.0)
-            ),
-            i, -1
-        );
-    }
-    for (const label i : swept)
     {
         bound
         (
@@ -217,32 +213,28 @@ Foam::scalar Foam::rbd::stepControl::choose
         return closeBy(i, k, 0.2*band_);
     };
 
-    // A pair within the band of its bounding spheres but with no contact
-    // has no feature within the band (the narrow phase reports every one;
-    // the exact solids' samples may miss a little, see unseenGap): it may
-    // close to half the touching gap, not only by eq 38's 0.2 lambda
-    const scalar unseenClosing =
-        exactSolids_ ? max(unseenGap*band_ - 0.5*touch_, 0.2*band_)
-      : 0.2*band_;
+    // A pair of exact solids within the band of its bounding spheres but
+    // with no contact has no feature within the band: it may close by
+    // unseenClosing(), not only by eq 38's 0.2 lambda
+    const scalar unseen = unseenClosing();
     std::vector<std::pair<label, label>> inContact;
-    boolList onFloor(exactSolids_ ? bodies.size() : 0, false);
-    boolList onWall(exactSolids_ ? bodies.size() : 0, false);
-    for (const contact& c : contacts)
+    std::vector<bool> onFloor(exactSolids_ ? bodies.size() : 0, false);
+    std::vector<bool> onWall(exactSolids_ ? bodies.size() : 0, false);
+    if (exactSolids_)
     {
-        if (!exactSolids_)
+        for (const contact& c : contacts)
         {
-            break;
+            if (c.k >= 0)
+            {
+                inContact.emplace_back(min(c.i, c.k), max(c.i, c.k));
+            }
+            else
+            {
+                (c.k == tubeBottom ? onFloor : onWall)[c.i] = true;
+            }
         }
-        if (c.k >= 0)
-        {
-            inContact.emplace_back(min(c.i, c.k), max(c.i, c.k));
-        }
-        else
-        {
-            (c.k == tubeBottom ? onFloor : onWall)[c.i] = true;
-        }
+        std::sort(inContact.begin(), inContact.end());
     }
-    std::sort(inContact.begin(), inContact.end());
     auto hasContact = [&](const label i, const label k)
     {
         return !exactSolids_ || std::binary_search
@@ -253,7 +245,7 @@ Foam::scalar Foam::rbd::stepControl::choose
     };
     auto withinBand = [&](const label i, const label k, const bool seen)
     {
-        return closeBy(i, k, seen ? 0.2*band_ : unseenClosing);
+        return closeBy(i, k, seen ? 0.2*band_ : unseen);
     };
 
     // 2. Listed pairs apart by more than the band: their bounding spheres

@@ -47,7 +47,8 @@ Foam::rbd::world::world
     ),
     sweep_
     (
-        controls.sweepSpeed, touch_, band_, rb_,
+        controls.sweepSpeed, touch_, band_, stepControl_.unseenClosing(),
+        rb_,
         contactDispatch::pairModel(shape, controls.contactModel) == "sphere",
         container.radius()
     ),
@@ -306,14 +307,19 @@ Foam::scalar Foam::rbd::world::sweptAdvance
 )
 {
     scalar d = GREAT;
+    // (no contact: gap 0 not seen, i.e. stepControl::unseenClosing)
     auto seenOrNot = [&]()
     {
+        if (sweepContacts_.empty())
+        {
+            return sweep_.advanceFor(0, false);
+        }
         scalar gap = GREAT;
         for (const contact& c : sweepContacts_)
         {
             gap = min(gap, c.gap);
         }
-        return sweep_.advanceFor(gap, !sweepContacts_.empty());
+        return sweep_.advanceFor(gap, true);
     };
     for (const label k : sweepNear_)
     {
@@ -481,8 +487,8 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     );
     scalar h = stepControl_.choose
     (
-        hMax, bodies_, fixed_, awake(), labelList(), activePairs(),
-        contacts_, neighbours_.slack(), swept_.size() ? &bodyBound_ : nullptr
+        hMax, bodies_, fixed_, awake(), activePairs(), contacts_,
+        neighbours_.slack(), swept_.size() ? &bodyBound_ : nullptr
     );
     if (swept_.size())
     {
@@ -493,7 +499,7 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
         }
         const scalar hSwept = stepControl_.choose
         (
-            hMax, bodies_, held_, awake(), swept_, activePairs(), contacts_,
+            hMax, bodies_, held_, awake(), activePairs(), contacts_,
             neighbours_.slack()
         );
         label n = 0;

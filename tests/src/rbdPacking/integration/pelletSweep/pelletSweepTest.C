@@ -20,6 +20,10 @@ namespace
     const scalar band = 0.1*r;
     const scalar touch = 1e-4*2*r;
 
+    //- What a pair of exact solids with no contact may close in a step
+    //  (stepControl::unseenClosing)
+    const scalar unseen = stepControl::unseenGap*band - 0.5*touch;
+
     rigidBody bodyAt
     (
         const point& x,
@@ -69,7 +73,7 @@ TEST(pelletSweep, stopsAtTheFirstTouchOfAFloor)
     // From 5 mm over the floor to 4 mm through it in one step: stopped
     // between half the touching gap and the touching gap, with its
     // momentum at the same fraction of the step
-    const pelletSweep sweep(0.5, touch, band, r, true, 1);
+    const pelletSweep sweep(0.5, touch, band, unseen, r, true, 1);
     const rigidBody start(bodyAt(point(0, 0, r + 5e-3), quaternion(1),
         vector(0, 0, -5)));
     rigidBody body(bodyAt(point(0, 0, r - 4e-3), quaternion(1),
@@ -91,7 +95,7 @@ TEST(pelletSweep, aTurnIsSweptToo)
     // one step without moving its centre: one end would go 4.1 mm below
     // the floor. The sweep counts the turn (theta r_b) and stops before
     // the end touches
-    const pelletSweep sweep(0.5, touch, band, r, false, 1);
+    const pelletSweep sweep(0.5, touch, band, unseen, r, false, 1);
     const point x(0, 0, 2e-4);
     const rigidBody start(bodyAt(x));
     const quaternion turned(vector(0, 1, 0), constant::mathematical::pi/3);
@@ -117,7 +121,7 @@ TEST(pelletSweep, advancesAsAStepCloses)
     // Seen (a contact within the band): eq 38's 0.2 lambda at most, and
     // to half the touching gap; touching: none. Not seen: the lower bound
     // (at least stepControl::unseenGap lambda) to half the touching gap
-    const pelletSweep sweep(0.5, touch, band, r, false, 1);
+    const pelletSweep sweep(0.5, touch, band, unseen, r, false, 1);
     EXPECT_DOUBLE_EQ(sweep.advanceFor(0.9*band, true), 0.2*band);
     EXPECT_DOUBLE_EQ(sweep.advanceFor(0.1*band, true), 0.1*band - 0.5*touch);
     EXPECT_EQ(sweep.advanceFor(touch, true), 0);
@@ -134,7 +138,7 @@ TEST(pelletSweep, aClearPathKeepsTheWholeStep)
 {
     // Falling from 20 mm to 10 mm over the floor: nothing met, nothing
     // changed
-    const pelletSweep sweep(0.5, touch, band, r, true, 1);
+    const pelletSweep sweep(0.5, touch, band, unseen, r, true, 1);
     const rigidBody start(bodyAt(point(0, 0, 0.02), quaternion(1),
         vector(0, 0, -5)));
     const rigidBody end(bodyAt(point(0, 0, 0.01), quaternion(1),
@@ -171,7 +175,7 @@ TEST(pelletSweep, selectsFastPelletsTouchingNothingNoTwoNeighbours)
     //   5 (1 m/s) is within the band of 4 (at rest) but clearer than
     //   pelletSweep::clearGap: taken;
     //   6 and 7 fall together at 5 m/s, a column: not swept
-    const pelletSweep sweep(0.5, touch, band, r, true, 1);
+    const pelletSweep sweep(0.5, touch, band, unseen, r, true, 1);
     List<rigidBody> bs(8);
     const scalarList speed({2, 1, 3, 0.2, 0, 1, 5, 5});
     forAll(bs, i)
@@ -213,7 +217,7 @@ TEST(pelletSweep, selectsFastPelletsTouchingNothingNoTwoNeighbours)
     EXPECT_EQ(sweep.relativeSpeed(6, bs, fixed, neighbours[6]), 5);
 
     // Off: none
-    const pelletSweep off(0, touch, band, r, true, 1);
+    const pelletSweep off(0, touch, band, unseen, r, true, 1);
     off.select
     (
         bs, fixed, labelList(identity(bs.size())), contacts, neighbours, swept
@@ -228,7 +232,7 @@ TEST(pelletSweep, boundingSpheresClearOfAPathNeedNoNarrowPhase)
     // tube of radius 0.1: a sphere beside the middle of the path at 2 r_b
     // + 1 mm is 1 mm clear, one beyond the end is clear by its distance
     // to the end; the floor and the wall only near them
-    const pelletSweep sweep(0.5, touch, band, r, true, 0.1);
+    const pelletSweep sweep(0.5, touch, band, unseen, r, true, 0.1);
     const point x0(0, 0, 0.5);
     const point x1(0.02, 0, 0.5);
     EXPECT_TRUE(sweep.clearOf(x0, x1, point(0.01, 2*r + 1e-3, 0.5), 0.999e-3));

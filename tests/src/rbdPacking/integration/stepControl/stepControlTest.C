@@ -93,7 +93,7 @@ TEST(stepControl, bodiesAtRestFallAtMostTheUnlistedClearance)
     const scalar clearance = 0.5*r;
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+        hMax, bs, fixed, awake, pairs, contacts,
         scalarList(2, 0.5*clearance)
     );
     EXPECT_DOUBLE_EQ
@@ -107,7 +107,7 @@ TEST(stepControl, bodiesAtRestFallAtMostTheUnlistedClearance)
     (
         control(true).choose
         (
-            hMax, bs, fixed, awake, labelList(), pairs, contacts,
+            hMax, bs, fixed, awake, pairs, contacts,
             scalarList(2, 0.5)
         ),
         hMax
@@ -136,7 +136,7 @@ TEST(stepControl, eachBodyCoversItsOwnSlack)
 
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, contacts, slack
+        hMax, bs, fixed, awake, pairs, contacts, slack
     );
     const scalar cover = 0.5*(band - 0.5*touch) + skinHalf;
     EXPECT_DOUBLE_EQ(h, stepControl::timeToCover(g, 2, cover));
@@ -168,7 +168,7 @@ TEST(stepControl, approachingListedPairStopsShortOfTouching)
     {
         const scalar h = control(centreGaps).choose
         (
-            hMax, bs, fixed, awake, labelList(), pairs, contacts,
+            hMax, bs, fixed, awake, pairs, contacts,
             scalarList(bs.size(), 5*r)
         );
         const scalar gapAfter = gap0 - u*h;
@@ -203,7 +203,7 @@ TEST(stepControl, eq38BoundsAContactWithinTheBand)
     // Meshes: eq 38
     const scalar hMesh = control(false).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+        hMax, bs, fixed, awake, pairs, contacts,
             scalarList(bs.size(), 5*r)
     );
     EXPECT_LE(hMesh, 0.2*band/vRel*(1 + 1e-12));
@@ -214,7 +214,7 @@ TEST(stepControl, eq38BoundsAContactWithinTheBand)
     // the resting solve holds, which is still positive
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+        hMax, bs, fixed, awake, pairs, contacts,
             scalarList(bs.size(), 5*r)
     );
     EXPECT_GT(h, 100*0.2*band/vRel);
@@ -255,7 +255,7 @@ TEST(stepControl, eq38BoundsASphereWithinTheBandOfTheWall)
 
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+        hMax, bs, fixed, awake, pairs, contacts,
             scalarList(bs.size(), 5*r)
     );
     EXPECT_LE(h, 0.2*band/v*(1 + 1e-12));
@@ -280,7 +280,7 @@ TEST(stepControl, sphereSkimmingTheWallStaysInside)
 
     const scalar h = control(true).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, contacts,
+        hMax, bs, fixed, awake, pairs, contacts,
             scalarList(bs.size(), 5*r)
     );
     const point xEnd = x + v*h;
@@ -311,11 +311,11 @@ TEST(stepControl, aPairWithinTheBandWithoutContactsMayCloseHalfTheBand)
 
     const scalar hApart = control(false, true).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, List<contact>(), slack
+        hMax, bs, fixed, awake, pairs, List<contact>(), slack
     );
     const scalar hMeshes = control(false, false).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, List<contact>(), slack
+        hMax, bs, fixed, awake, pairs, List<contact>(), slack
     );
     EXPECT_LE(hMeshes, 0.2*band/vRel*(1 + 1e-12));
     const scalar closing = stepControl::unseenGap*band - 0.5*touch;
@@ -329,7 +329,7 @@ TEST(stepControl, aPairWithinTheBandWithoutContactsMayCloseHalfTheBand)
     contacts[0].gap = 0.5*band;
     const scalar hTouching = control(false, true).choose
     (
-        hMax, bs, fixed, awake, labelList(), pairs, contacts, slack
+        hMax, bs, fixed, awake, pairs, contacts, slack
     );
     EXPECT_LE(hTouching, 0.2*band/vRel*(1 + 1e-12));
 }
@@ -355,7 +355,7 @@ TEST(stepControl, aSweptPelletIsHeldStillForTheOthers)
     {
         const scalar h = control(centreGaps).choose
         (
-            hMax, bs, fixed, awake, labelList(), pairs, contacts, slack
+            hMax, bs, fixed, awake, pairs, contacts, slack
         );
         EXPECT_LT(h, gap0/6);
 
@@ -363,7 +363,7 @@ TEST(stepControl, aSweptPelletIsHeldStillForTheOthers)
         held[0] = true;
         const scalar hSwept = control(centreGaps).choose
         (
-            hMax, bs, held, awake, labelList({0}), pairs, contacts, slack
+            hMax, bs, held, awake, pairs, contacts, slack
         );
         EXPECT_DOUBLE_EQ
         (

@@ -703,9 +703,9 @@ TEST(stabilityMesh, fastPelletsThrownOntoAPileStopAtTheirFirstTouch)
     // stop at their first touch, never in or through a pellet or the
     // floor. Exact cylinders, and rings on meshes; the same scene with
     // sweepSpeed 0 (every pellet bounds the step) for comparison; three
-    // seeds of the throw. Measured: 0.54-0.89 of the steps of sweepSpeed
+    // seeds of the throw. Measured: 0.54-0.90 of the steps of sweepSpeed
     // 0; largest overlap 0.012-0.21 % dp against 0.012-0.33 (cylinders),
-    // 0.00005-0.019 against 0.03-0.10 (rings). The build that left the
+    // 0.0004-0.0045 against 0.03-0.10 (rings). The build that left the
     // swept pellets' contacts out of the resting solve let a pellet the
     // solve pushed go 0.7 % dp into a swept one's start; the one whose
     // spin counted against its approach, 8 % dp
