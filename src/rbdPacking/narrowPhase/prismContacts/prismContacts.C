@@ -25,13 +25,24 @@ namespace
     using namespace Foam;
     using namespace Foam::rbd;
 
-    //- The other prism seen from this one's profile frame: x_other =
-    //  M x + t
-    struct otherPrism
+    //- A profile frame mapped into the frame a signed distance is given
+    //  in (the other prism's, the world's): x_there = M x + t
+    struct frameMap
     {
-        const prismProfile& other;
         tensor M;
         vector t;
+
+        //- A direction there (a gradient) in the profile frame
+        vector local(const vector& n) const
+        {
+            return n & M;
+        }
+    };
+
+    //- The other prism seen from this one's profile frame
+    struct otherPrism : frameMap
+    {
+        const prismProfile& other;
         scalar band;
 
         bool near(const point& c, const scalar radius) const
@@ -49,12 +60,6 @@ namespace
             return other.signedDistance((M & x) + t, n);
         }
 
-        //- A direction of the other's frame in this one's
-        vector local(const vector& n) const
-        {
-            return n & M;
-        }
-
         //- The other's nearest arc (-1: a face)
         label nearestArc(const point& x) const
         {
@@ -68,10 +73,8 @@ namespace
 
     //- The tube's lateral wall seen from a profile frame (x_world = M x +
     //  t); n: the wall's normal into the tube, world frame
-    struct tubeWallDistance
+    struct tubeWallDistance : frameMap
     {
-        tensor M;
-        vector t;
         scalar R;
         scalar band;
 
@@ -91,12 +94,6 @@ namespace
             return R - rho;
         }
 
-        //- A world direction in the profile frame
-        vector local(const vector& n) const
-        {
-            return n & M;
-        }
-
         label nearestArc(const point&) const
         {
             return -1;
@@ -104,10 +101,8 @@ namespace
     };
 
     //- The tube's bottom (z = 0)
-    struct tubeBottomDistance
+    struct tubeBottomDistance : frameMap
     {
-        tensor M;
-        vector t;
         scalar band;
 
         bool near(const point& c, const scalar radius) const
@@ -119,12 +114,6 @@ namespace
         {
             n = vector(0, 0, 1);
             return ((M & x) + t).z();
-        }
-
-        //- A world direction in the profile frame
-        vector local(const vector& n) const
-        {
-            return n & M;
         }
 
         label nearestArc(const point&) const
@@ -489,7 +478,27 @@ void Foam::rbd::prismContacts::refineOnArc
     const scalar ts = a.r*dt;
     scalar trust = 1;
     scalar tried = 0;
-    bool stuck = false;
+
+    // Where Newton cannot go on. Inside the other that is a kink of sd
+    // (its medial surface, where the nearest part changes): compass
+    // search from here on the scale of the step tried. Outside, sd is
+    // smooth to first order and Newton stalls only where its Hessian
+    // jumps (from a face's region to a rim's) next to a minimum of the
+    // distance to that rim, which the other's rim scan refines; the
+    // search changed no least gap of the 40 000 random poses of
+    // prismContactsTest, and cost about 770 evaluations per stall in a
+    // cylinder bed
+    auto stalled = [&]()
+    {
+        if (f < 0)
+        {
+            compassSearch
+            (
+                sd, a, min(dt, tried/a.r), min(dz, tried), box, t, z, f, n
+            );
+        }
+    };
+
     for (label iter = 0; iter < 40; ++iter)
     {
         const vector2D g(gradient(t, n));
@@ -539,12 +548,11 @@ void Foam::rbd::prismContacts::refineOnArc
         if (!(slope < 0))
         {
             // At the minimum (no step), or the capped step is no descent
-            if (ds == 0 && dzq == 0)
+            if (!(ds == 0 && dzq == 0))
             {
-                return;
+                stalled();
             }
-            stuck = true;
-            break;
+            return;
         }
 
         // Backtracking line search along (ds, dzq): the minimum of the
@@ -581,35 +589,14 @@ void Foam::rbd::prismContacts::refineOnArc
         }
         if (!accepted)
         {
-            stuck = true;
-            break;
+            stalled();
+            return;
         }
         if (step < tolerance_)
         {
             return;
         }
         trust = min(scalar(1), 2*alpha*trust);
-    }
-
-    if (!stuck)
-    {
-        return;
-    }
-
-    // Newton could not go on. Inside the other that is a kink of sd (its
-    // medial surface, where the nearest part changes): compass search
-    // from here on the scale of the step tried. Outside, sd is smooth to
-    // first order and Newton stalls only where its Hessian jumps (from a
-    // face's region to a rim's) next to a minimum of the distance to that
-    // rim, which the other's rim scan refines; the search changed no
-    // least gap of the 40 000 random poses of prismContactsTest, and
-    // cost about 770 evaluations per stall in a cylinder bed
-    if (f < 0)
-    {
-        compassSearch
-        (
-            sd, a, min(dt, tried/a.r), min(dz, tried), box, t, z, f, n
-        );
     }
 }
 
@@ -989,11 +976,11 @@ void Foam::rbd::prismContacts::prismPrism
     );
 
     hits_.clear();
-    scan(otherPrism{profile_, M, t, band_}, hits_);
+    scan(otherPrism{{M, t}, profile_, band_}, hits_);
     addHits(hits_, i, bi, k, bk, false, contacts);
 
     hits_.clear();
-    scan(otherPrism{profile_, M.T(), -(M.T() & t), band_}, hits_);
+    scan(otherPrism{{M.T(), -(M.T() & t)}, profile_, band_}, hits_);
     addHits(hits_, i, bi, k, bk, true, contacts);
 
     contactReduction::reduce
@@ -1058,13 +1045,13 @@ void Foam::rbd::prismContacts::prismTube
     if (nearBottom)
     {
         hits_.clear();
-        scan(tubeBottomDistance{M, t, band_}, hits_);
+        scan(tubeBottomDistance{{M, t}, band_}, hits_);
         add(tubeBottom);
     }
     if (nearWall)
     {
         hits_.clear();
-        scan(tubeWallDistance{M, t, Rt, band_}, hits_);
+        scan(tubeWallDistance{{M, t}, Rt, band_}, hits_);
         add(tubeWall);
     }
     contactReduction::reduce
