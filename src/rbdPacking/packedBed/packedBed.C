@@ -840,21 +840,26 @@ void Foam::rbd::packedBed::checkControls() const
     const pelletShape& shape = shape_();
     const scalar rb = shape.boundingRadius();
 
-    // The overlap correction leaves interpenetrations of contactTolerance
-    // dp; the proximity band must hold them with room to spare, or the
-    // step that keeps contacts within the band collapses (1e-18 s seen
-    // with the tolerance twice the band: a hang, not an error)
+    // The overlap correction leaves interpenetrations of overlapSlop dp
+    // (at least contactTolerance); the proximity band must hold them with
+    // room to spare, or the step that keeps contacts within the band
+    // collapses (1e-18 s seen with the tolerance twice the band: a hang,
+    // not an error)
     {
-        const scalar slop = controls_.contactTolerance*shape.diameter();
+        const bool bySlop =
+            controls_.overlapSlop > controls_.contactTolerance;
+        const word key(bySlop ? "overlapSlop" : "contactTolerance");
+        const scalar value =
+            bySlop ? controls_.overlapSlop : controls_.contactTolerance;
+        const scalar slop = value*shape.diameter();
         const scalar band = controls_.proximity*rb;
         if (slop > 0.25*band)
         {
             badEntry
             (
-                controls_.dict, "contactTolerance",
-                controls_.contactTolerance,
+                controls_.dict, key, value,
                 "a tolerance of at most a quarter of the proximity band: "
-                "contactTolerance dp <= proximity r_b/4, here <= "
+              + key + " dp <= proximity r_b/4, here <= "
               + Foam::name(0.25*band/shape.diameter()) + " (proximity "
               + Foam::name(controls_.proximity) + ", r_b "
               + Foam::name(rb) + " m, dp " + Foam::name(shape.diameter())

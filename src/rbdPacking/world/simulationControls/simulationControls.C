@@ -29,6 +29,7 @@ const Foam::wordList Foam::rbd::simulationControls::knownEntries
 ({
     "deltaT", "endTime", "gravity", "restingVelocity",
     "slipVelocity", "proximity", "neighbourSkin", "contactTolerance",
+    "overlapSlop",
     "restitutionSweeps", "maxSweeps", "collisionTolerance",
     "sleepVelocity", "sleepTime", "wakeVelocity",
     "settleTime", "settleEnergy", "logInterval", "checkpointInterval",
@@ -143,6 +144,10 @@ Foam::rbd::simulationControls::simulationControls
         "-")),
     contactTolerance(getInRangeOrDefault(d, "contactTolerance", 1e-4,
         1e-9, 0.01, "-")),
+    // Not below the touching gap: a contact the collisions leave at the
+    // touching gap is not an overlap to correct
+    overlapSlop(getInRangeOrDefault(d, "overlapSlop", contactTolerance,
+        contactTolerance, 0.01, "-")),
     restitutionSweeps(getLabelOrDefault(d, "restitutionSweeps", 10, 0)),
     maxSweeps(getLabelOrDefault(d, "maxSweeps", 200, 1)),
     threads(getLabelOrDefault(d, "threads", 0, 0, 1024)),
@@ -263,6 +268,7 @@ void Foam::rbd::simulationControls::write(Ostream& os) const
     os.writeEntry("proximity", proximity);
     os.writeEntry("neighbourSkin", neighbourSkin);
     os.writeEntry("contactTolerance", contactTolerance);
+    os.writeEntry("overlapSlop", overlapSlop);
     os.writeEntry("restitutionSweeps", restitutionSweeps);
     os.writeEntry("maxSweeps", maxSweeps);
     os.writeEntry("threads", threads);

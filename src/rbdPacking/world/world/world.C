@@ -32,7 +32,7 @@ Foam::rbd::world::world
     rb_(shape.boundingRadius()),
     band_(controls.proximity*shape.boundingRadius()),
     touch_(controls.contactTolerance*shape.diameter()),
-    projection_(controls.contactTolerance*shape.diameter(), rb_),
+    projection_(controls.overlapSlop*shape.diameter(), rb_),
     dispatch_
     (
         shape, container, material.restitution, material.friction, band_,

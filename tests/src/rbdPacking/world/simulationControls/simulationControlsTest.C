@@ -256,4 +256,29 @@ TEST(simulationControlsDeath, frictionRoundsOutOfRange)
 }
 
 
+TEST(simulationControls, overlapSlopDefaultsToTheContactToleranceAndIsEchoed)
+{
+    const rbd::simulationControls c(parse(""));
+    EXPECT_DOUBLE_EQ(c.overlapSlop, c.contactTolerance);
+    const rbd::simulationControls t(parse("contactTolerance 1e-5;"));
+    EXPECT_DOUBLE_EQ(t.overlapSlop, 1e-5);
+    const rbd::simulationControls g(parse("overlapSlop 2e-3;"));
+    EXPECT_DOUBLE_EQ(g.overlapSlop, 2e-3);
+    OStringStream os;
+    g.write(os);
+    EXPECT_EQ(parse(os.str()).get<scalar>("overlapSlop"), 2e-3);
+}
+
+
+TEST(simulationControlsDeath, overlapSlopBelowTheContactTolerance)
+{
+    EXPECT_EXIT
+    (
+        rbd::simulationControls(parse("overlapSlop 1e-5;")),
+        ::testing::ExitedWithCode(1),
+        "overlapSlop 1e-05(.|\n)*allowed: a number in \\[0.0001, 0.01\\]"
+    );
+}
+
+
 // ************************************************************************* //
