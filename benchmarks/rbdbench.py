@@ -1196,6 +1196,33 @@ def std(xs):
     return math.sqrt(sum((x - m)**2 for x in xs) / (len(xs) - 1))
 
 
+def statusText(r):
+    """A run's status; for a run that did not finish, how far it got (from
+    its log)."""
+    st = r.get('status')
+    v = r.get('log/released')
+    if st != 'ok' and v is not None:
+        t, w = r.get('log/time'), r.get('log/executionTime')
+        st += ' (%s pellets released, %s s simulated in %s s)' % (
+            v, fmt(t, '%.2f'), fmt(w, '%.0f'))
+    return st
+
+
+def fitPower(xs, ys):
+    """b and a of y = a x^b by least squares on the logarithms."""
+    pts = [(math.log(x), math.log(y)) for x, y in zip(xs, ys)
+           if x > 0 and y > 0 and not math.isnan(y)]
+    if len(pts) < 2:
+        return float('nan'), float('nan')
+    mx = sum(p[0] for p in pts) / len(pts)
+    my = sum(p[1] for p in pts) / len(pts)
+    sxx = sum((p[0] - mx)**2 for p in pts)
+    if sxx == 0:
+        return float('nan'), float('nan')
+    b = sum((p[0] - mx) * (p[1] - my) for p in pts) / sxx
+    return b, math.exp(my - b * mx)
+
+
 def pyplot():
     import matplotlib
     matplotlib.use('Agg')
