@@ -976,6 +976,122 @@ TEST(prismContacts, parallelLyingCylindersTouchAtTheEndsOfTheirLine)
 }
 
 
+namespace
+{
+    //- The least distance into (or from) pellet b of the points of pellet
+    //  a's surface (rims, lateral wall; a cylinder, dense: 0.01 degrees,
+    //  1 um) within reach of the world point near [m]
+    scalar surfaceGapNear
+    (
+        const pellet& P,
+        const rigidBody& a,
+        const rigidBody& b,
+        const point& near,
+        const scalar reach
+    )
+    {
+        const prismProfile& p = P.profile();
+        const scalar R = p.outerRadius();
+        const scalar h = p.halfHeight();
+        auto world = [&](const point& x)
+        {
+            return (a.R() & ((p.Q() & x) + p.t())) + a.x();
+        };
+        scalar least = GREAT;
+        const label nT = 36000;
+        for (label j = 0; j < nT; ++j)
+        {
+            const scalar t = twoPi*j/nT;
+            const scalar c = Foam::cos(t), s = Foam::sin(t);
+            // Where this generator passes within reach of near
+            const point lo(world(point(R*c, R*s, -h)));
+            const point hi(world(point(R*c, R*s, h)));
+            const vector e(hi - lo);
+            const scalar u = ((near - lo) & e)/magSqr(e);
+            const point foot(lo + max(0.0, min(1.0, u))*e);
+            if (mag(foot - near) > reach)
+            {
+                continue;
+            }
+            const label nZ = label(2*h/1e-6);
+            for (label m = 0; m <= nZ; ++m)
+            {
+                const point y(world(point(R*c, R*s, -h + 2*h*m/nZ)));
+                if (mag(y - near) <= reach)
+                {
+                    least = min(least, worldDistance(p, b, y));
+                }
+            }
+        }
+        return least;
+    }
+}
+
+
+TEST(prismContacts, bothEndsOfALyingCylinderRockingOnAnother)
+{
+    // Two lying cylinders of the 78-cylinder validation bed (N = 3.55,
+    // seed 1, step 32 814, poses from the run): the upper one lies along
+    // the lower's wall, a line contact from B (the upper's rim at -h, -0.9
+    // um, the deepest) to A (its rim at +h, +0.1 um), and rocks between
+    // them. The narrow phase gave B and, near A, only the rim sample 0.2
+    // rad off at +51 um: the rim's refinement took no step (a cap of 0 on
+    // the fixed height scaled every step to nothing), and the wall's, in
+    // (angle, height), slid down the line to B. A, unlisted, sank 50 um
+    // (0.5 % d) in the next step of 3.1 ms. Both ends must be listed
+    // within 0.001 d of their brute-force gap
+    const pellet P(cylinderEntries);
+    const rigidBody lower
+    (
+        bodyAt
+        (
+            point(0.011278503759727236, -0.0041864925812143041,
+                  0.08838889669736158),
+            quaternion(0.42062753803087183, vector(-0.22748439043036561,
+                       0.69948054494901801, 0.53108407394539459))
+        )
+    );
+    const rigidBody upper
+    (
+        bodyAt
+        (
+            point(0.011054389927414216, -0.0044595471669995014,
+                  0.098449074626211927),
+            quaternion(-0.27732524422879501, vector(0.5136908336960041,
+                       0.526412198083548, 0.61814450899364215))
+        )
+    );
+    const DynamicList<contact> cs(P.pair(upper, lower));
+    const scalar reach = 1.5e-3;
+    for (const point& place : {point(0.0127, -0.0002, 0.0931),
+                               point(0.00964, -0.00846, 0.09378)})
+    {
+        const scalar brute = min
+        (
+            surfaceGapNear(P, upper, lower, place, reach),
+            surfaceGapNear(P, lower, upper, place, reach)
+        );
+        ASSERT_LT(brute, P.band) << str(place);
+        scalar listed = GREAT;
+        for (const contact& c : cs)
+        {
+            if (mag(c.p - place) < reach)
+            {
+                listed = min(listed, c.gap);
+            }
+        }
+        std::cout
+            << "[ measured ] near " << str(place) << ": brute force "
+            << brute/P.d << " d, least contact gap there " << listed/P.d
+            << " d" << std::endl;
+        EXPECT_NEAR(listed/P.d, brute/P.d, 1e-3) << str(place);
+    }
+    label bad = 0;
+    checkConsistent(P, upper, lower, cs, bad);
+    EXPECT_EQ(bad, 0);
+}
+
+
 TEST(prismContacts, cylinderOnItsRimOnAFace)
 {
     // i tilted by 30 degrees about x with its lowest rim point at g above
