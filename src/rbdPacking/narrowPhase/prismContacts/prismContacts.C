@@ -376,20 +376,17 @@ Foam::vector2D Foam::rbd::prismContacts::newtonStep
         d.y() = along(g.y(), Hzz, capZ);
     }
 
-    // Within the caps, the direction kept (each part of it descends). A
-    // variable held (a rim: z fixed, capZ 0) has no part and no cap: its
-    // cap of 0 once scaled every step along a rim to nothing, so that no
-    // rim minimum was refined and a rim's contact was its nearest sample,
-    // up to r (1 - cos 7.5 deg) = 0.0086 r above the extreme point
-    scalar scale = 1;
-    if (d.x() != 0)
-    {
-        scale = min(scale, capS/mag(d.x()));
-    }
-    if (d.y() != 0)
-    {
-        scale = min(scale, capZ/mag(d.y()));
-    }
+    // Within the caps, the direction kept (each part of it descends)
+    const scalar scale =
+        min
+        (
+            scalar(1),
+            min
+            (
+                capS/max(mag(d.x()), VSMALL),
+                capZ/max(mag(d.y()), VSMALL)
+            )
+        );
     return scale*d;
 }
 
