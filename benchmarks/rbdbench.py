@@ -1196,6 +1196,20 @@ def std(xs):
     return math.sqrt(sum((x - m)**2 for x in xs) / (len(xs) - 1))
 
 
+def num(r, key):
+    """A result's entry as a float; NaN where it is missing or not a
+    number."""
+    v = r.get(key)
+    if isinstance(v, (int, float)) and not isinstance(v, bool):
+        return float(v)
+    return float('nan')
+
+
+#: Long runs write a checkpoint this often [s of wall time] and resume
+#: from it when the same command is run again (Benchmark._resumable)
+CHECKPOINT_INTERVAL = 600
+
+
 def statusText(r):
     """A run's status; for a run that did not finish, how far it got (from
     its log)."""
