@@ -376,17 +376,20 @@ Foam::vector2D Foam::rbd::prismContacts::newtonStep
         d.y() = along(g.y(), Hzz, capZ);
     }
 
-    // Within the caps, the direction kept (each part of it descends)
-    const scalar scale =
-        min
-        (
-            scalar(1),
-            min
-            (
-                capS/max(mag(d.x()), VSMALL),
-                capZ/max(mag(d.y()), VSMALL)
-            )
-        );
+    // Within the caps, the direction kept (each part of it descends). A
+    // variable held (a rim: z fixed, capZ 0) has no part and no cap: its
+    // cap of 0 once scaled every step along a rim to nothing, so that no
+    // rim minimum was refined and a rim's contact was its nearest sample,
+    // up to r (1 - cos 7.5 deg) = 0.0086 r above the extreme point
+    scalar scale = 1;
+    if (d.x() != 0)
+    {
+        scale = min(scale, capS/mag(d.x()));
+    }
+    if (d.y() != 0)
+    {
+        scale = min(scale, capZ/mag(d.y()));
+    }
     return scale*d;
 }
 
@@ -624,8 +627,10 @@ void Foam::rbd::prismContacts::scanRims
         for (label j = 0; j < nS; ++j)
         {
             const scalar fj = f_[j];
+            label sampleHit = -1;
             if (fj < band_)
             {
+                sampleHit = hits.size();
                 hits.push_back
                 (
                     {
@@ -667,10 +672,18 @@ void Foam::rbd::prismContacts::scanRims
             const point pBest(onArc(a, tBest, zBest));
             if (fBest < band_ && fBest < fj)
             {
-                hits.push_back
-                (
-                    {pBest, fBest, nx, cv.arc, sd.nearestArc(pBest), true}
-                );
+                const hit refined
+                {
+                    pBest, fBest, nx, cv.arc, sd.nearestArc(pBest), true
+                };
+                if (sampleHit >= 0)
+                {
+                    hits[sampleHit] = refined;
+                }
+                else
+                {
+                    hits.push_back(refined);
+                }
             }
         }
     }
