@@ -246,7 +246,9 @@ Foam::word Foam::rbd::contactDispatch::pairModel
     // arc (a ring's bore, a hole) lacks the curvature term of a wall
     // inside it (prismContacts::roundRadius): an 8-ring bed reached
     // 0.55 % of d, above the stability suite's 0.5 %, so they pack on
-    // meshes
+    // meshes. (Their pairs unreduced, rings stayed within 0.5 % on 34
+    // beds, cylinders with holes reached 0.53 %: docs/exactContacts.md;
+    // rings wait for their validation)
     if (hasPrism && !prism->hasConcaveArc())
     {
         return "prism";

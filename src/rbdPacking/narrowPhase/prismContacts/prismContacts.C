@@ -135,6 +135,7 @@ Foam::rbd::prismContacts::prismContacts
     profile_(profile),
     band_(band),
     mergeDistance_(1e-3*profile.boundingRadius()),
+    reducePairs_(!profile.hasConcaveArc()),
     tolerance_(1e-6*profile.boundingRadius()),
     rims_(),
     faces_(),
@@ -996,10 +997,14 @@ void Foam::rbd::prismContacts::prismPrism
     scan(otherPrism{{M.T(), -(M.T() & t)}, profile_, band_}, hits_);
     addHits(hits_, i, bi, k, bk, true, contacts);
 
-    contactReduction::reduce
-    (
-        contacts, start, mergeDistance_, 0.1*band_, keepAll, laterCorners
-    );
+    if (reducePairs_)
+    {
+        contactReduction::reduce
+        (
+            contacts, start, mergeDistance_, 0.1*band_, keepAll,
+            laterCorners
+        );
+    }
 }
 
 
