@@ -169,14 +169,16 @@ Foam::rbd::blockPivotingLCP::blockPivotingLCP(const dictionary& coeffs)
         getLabelOrDefault(coeffs, "fallbackIterations", 10, 1)
     ),
     fallbackSize_(getLabelOrDefault(coeffs, "fallbackSize", 400, 0)),
-    fallback_(new baraffLCP(fallbackCoeffs()))
+    fallback_(new baraffLCP(fallbackCoeffs())),
+    maxUpdate_(getLabelOrDefault(coeffs, "maxUpdate", 16, 0))
 {
     checkKnownEntries
     (
         coeffs,
         {
             "tolerance", "regularisation", "maxIterations",
-            "interiorPointIterations", "fallbackIterations", "fallbackSize"
+            "interiorPointIterations", "fallbackIterations", "fallbackSize",
+            "maxUpdate"
         }
     );
 }
@@ -336,8 +338,11 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
         kept = nullptr;
     }
     std::vector<label> pos(n), members, infeasible;
-    activeSetSystem& system = kept ? kept->system : system_;
-    preorderedLDLT& ldlt = kept ? kept->ldlt : ldlt_;
+    if (!kept)
+    {
+        own_.invalidate();
+    }
+    activeSetFactor& fac = kept ? *kept : own_;
     Eigen::VectorXd z(Eigen::VectorXd::Zero(n)), w(n);
 
     // Judice-Pires: block exchanges while the number of infeasible
@@ -363,29 +368,43 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             }
         }
 
-        // (one factorisation; on failure, not expected as A_FF + eps I is
-        // positive definite, the interior point and the fallback take over)
-        // (the first candidate from the kept factor where that is the
-        // factor of this set)
-        const bool factorised = kept && kept->holds(members, eps);
-        if (kept)
-        {
-            kept->invalidate();
-        }
-        if
-        (
-            !solveActiveSet
+        // The candidate: from the factor of the last factorised set
+        // where this set differs from it in at most maxUpdate contacts
+        // (activeSetUpdate: the first candidate of a kept factor's set
+        // costs two triangular solves), else one factorisation, which
+        // becomes that set. On failure, not expected as A_FF + eps I is
+        // positive definite, the interior point and the fallback take
+        // over
+        const bool contactSpace = !body.valid();
+        const bool factorised = contactSpace && fac.holds(members, eps);
+        const bool updated =
+            contactSpace && !factorised && fac.updates && fac.valid
+         && fac.eps == eps
+         && fac.update.solve
             (
-                A, body.get(), members, pos, eps, minusB, ldlt, system, z,
-                factorised
+                A, fac.members, fac.ldlt, pos, eps, maxUpdate_, minusB, z
+            );
+        if (!updated)
+        {
+            if (contactSpace && !factorised)
+            {
+                fac.invalidate();
+            }
+            if
+            (
+                !solveActiveSet
+                (
+                    A, body.get(), members, pos, eps, minusB, fac.ldlt,
+                    fac.system, z, factorised
+                )
             )
-        )
-        {
-            break;
-        }
-        if (kept)
-        {
-            kept->set(members, eps);
+            {
+                break;
+            }
+            if (contactSpace && !factorised)
+            {
+                fac.set(members, eps, n);
+            }
         }
         w = (body.valid() ? body->product(z) : Eigen::VectorXd(A*z)) + b;
         result.iterations = iter + 1;
@@ -708,6 +727,7 @@ void Foam::rbd::blockPivotingLCP::writeCoeffs(Ostream& os) const
     os.writeEntry("interiorPointIterations", interiorPointIterations_);
     os.writeEntry("fallbackIterations", fallbackIterations_);
     os.writeEntry("fallbackSize", fallbackSize_);
+    os.writeEntry("maxUpdate", maxUpdate_);
 }
 
 

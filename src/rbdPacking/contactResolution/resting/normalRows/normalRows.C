@@ -125,6 +125,19 @@ void Foam::rbd::normalRows::solve
     if (!assembled)
     {
         sys.kept->invalidate();
+
+        // Candidates from the last factor (activeSetUpdate) on islands of
+        // sphere contacts only: there they paid (500 placed spheres, seeds
+        // 1-7: 0.84 times the CPU time); on 40 placed exact cylinders,
+        // seeds 1-8, they bought nothing (1.06 times) and the trajectories
+        // they changed gave one bed of eight over 0.5 % d
+        // (docs/restingSolveCost.md, "Thirty-third session")
+        bool centreBased = true;
+        for (const label ci : cs)
+        {
+            centreBased = centreBased && contacts[ci].centreBased;
+        }
+        sys.kept->updates = centreBased;
     }
     const Eigen::SparseMatrix<double>& A = sys.A;
     const Eigen::VectorXd& shift = sys.shift;
