@@ -403,7 +403,7 @@ Foam::rbd::lcpResult Foam::rbd::blockPivotingLCP::solve
             }
             if (contactSpace && !factorised)
             {
-                fac.set(members, eps, n);
+                fac.set(members, eps);
             }
         }
         w = (body.valid() ? body->product(z) : Eigen::VectorXd(A*z)) + b;

@@ -84,7 +84,7 @@ TEST(activeSetUpdate, matchesTheFactorisationOfTheSet)
                 A, nullptr, base, basePos, eps, r, fac.ldlt, fac.system, z0
             )
         );
-        fac.set(base, eps, m);
+        fac.set(base, eps);
 
         // The set by its own factorisation, and by the update
         rbd::activeSetSystem system;
@@ -174,7 +174,7 @@ TEST(activeSetUpdate, refusesLargeChangesAndMissingBases)
             A, nullptr, base, basePos, eps, r, fac.ldlt, fac.system, z
         )
     );
-    fac.set(base, eps, m);
+    fac.set(base, eps);
 
     // Five contacts left a base of 60: refused above a border of 4
     EXPECT_FALSE(fac.update.solve(A, base, fac.ldlt, pos, eps, 4, r, z));
