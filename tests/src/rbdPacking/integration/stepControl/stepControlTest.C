@@ -229,6 +229,91 @@ TEST(stepControl, eq38BoundsAContactWithinTheBand)
 }
 
 
+TEST(stepControl, aSlowApproachOfSpheresIsLeftToTheRestingSolve)
+{
+    // Two spheres side by side, 1e-6 m apart (ten touching gaps), closing
+    // at 0.9 eps_p: a resting approach. Meshes stop it at half the touching
+    // gap; spheres take a longer step, whose end the resting solve holds
+    // at a linear gap >= 0 (the true gap is never below it)
+    const scalar gap = 10*touch;
+    const scalar u = 0.9*epsP;
+    List<rigidBody> bs(2);
+    bs[0] = sphereAt(point(0, 0, 0.05), Zero);
+    bs[1] = sphereAt(point(2*r + gap, 0, 0.05), vector(-u, 0, 0));
+    const boolList fixed(2, false);
+    const labelList awake({0, 1});
+    const List<labelPair> pairs({labelPair(0, 1)});
+    List<contact> contacts(1);
+    ASSERT_TRUE
+    (
+        sphereContacts::sphereSphere
+        (
+            0, bs[0], r, 1, bs[1], r, band, contacts[0]
+        )
+    );
+    const scalar untilTouching = (gap - 0.5*touch)/u;
+    ASSERT_LT(untilTouching, 0.1*hMax);
+
+    const scalar hMesh = control(false).choose
+    (
+        hMax, bs, fixed, awake, pairs, contacts,
+            scalarList(bs.size(), 5*r)
+    );
+    EXPECT_LE(hMesh, untilTouching*(1 + 1e-12));
+    EXPECT_GT(hMesh, 0);
+
+    const scalar h = control(true).choose
+    (
+        hMax, bs, fixed, awake, pairs, contacts,
+            scalarList(bs.size(), 5*r)
+    );
+    EXPECT_GT(h, 10*untilTouching);
+
+    // Faster than eps_p it is a collision: stopped short of touching
+    bs[1] = sphereAt(point(2*r + gap, 0, 0.05), vector(-2*epsP, 0, 0));
+    const scalar hColliding = control(true).choose
+    (
+        hMax, bs, fixed, awake, pairs, contacts,
+            scalarList(bs.size(), 5*r)
+    );
+    EXPECT_LE(hColliding, (gap - 0.5*touch)/(2*epsP)*(1 + 1e-12));
+}
+
+
+TEST(stepControl, aSlowApproachOfTheWallStopsShortOfTouching)
+{
+    // The concave wall keeps the bound for spheres too
+    const scalar R = tubeRadius;
+    const scalar gap = 10*touch;
+    const scalar u = 0.9*epsP;
+    List<rigidBody> bs(1);
+    bs[0] = sphereAt(point(R - r - gap, 0, 0.05), vector(u, 0, 0));
+    const boolList fixed(1, false);
+    const labelList awake({0});
+    const List<labelPair> pairs;
+    const tube container(2*R, 1, 0.5, 0.5);
+    DynamicList<contact> found;
+    sphereContacts::sphereTube(0, bs[0], r, container, band, found);
+    List<contact> contacts;
+    for (const contact& c : found)
+    {
+        if (c.k == tubeWall)
+        {
+            contacts.append(c);
+        }
+    }
+    ASSERT_EQ(contacts.size(), 1);
+
+    const scalar h = control(true).choose
+    (
+        hMax, bs, fixed, awake, pairs, contacts,
+            scalarList(bs.size(), 5*r)
+    );
+    EXPECT_LE(h, (contacts[0].gap - 0.5*touch)/u*(1 + 1e-9));
+    EXPECT_GT(h, 0);
+}
+
+
 TEST(stepControl, eq38BoundsASphereWithinTheBandOfTheWall)
 {
     // The wall is concave: a sphere within its band moving along it keeps
