@@ -348,6 +348,43 @@ TEST(stepControl, eq38BoundsASphereWithinTheBandOfTheWall)
 }
 
 
+TEST(stepControl, aSphereOnTheWallMovesLessThanItsCurvatureAllows)
+{
+    // A sphere at rest on the wall: its neighbours may push it along the
+    // wall (up to g), and the concave wall closes the true gap by s^2/(2
+    // (R - r)) beyond the linear gap the resting solve holds; the step
+    // keeps that within half the touching gap
+    const scalar R = tubeRadius;
+    List<rigidBody> bs(1);
+    bs[0] = sphereAt(point(R - r - 0.5*touch, 0, 0.05), Zero);
+    const boolList fixed(1, false);
+    const labelList awake({0});
+    const List<labelPair> pairs;
+    const tube container(2*R, 1, 0.5, 0.5);
+    DynamicList<contact> found;
+    sphereContacts::sphereTube(0, bs[0], r, container, band, found);
+    List<contact> contacts;
+    for (const contact& c : found)
+    {
+        if (c.k == tubeWall)
+        {
+            contacts.append(c);
+        }
+    }
+    ASSERT_EQ(contacts.size(), 1);
+
+    const scalar h = control(true).choose
+    (
+        hMax, bs, fixed, awake, pairs, contacts,
+            scalarList(bs.size(), 5*r)
+    );
+    EXPECT_GT(h, 0);
+    const scalar s = 0.5*g*sqr(h);
+    EXPECT_LE(sqr(s)/(2*(R - r)), 0.5*touch*(1 + 1e-9));
+    EXPECT_LT(h, 0.5*hMax);
+}
+
+
 TEST(stepControl, sphereSkimmingTheWallStaysInside)
 {
     // A sphere moving along the wall's tangent closes the gap faster than
