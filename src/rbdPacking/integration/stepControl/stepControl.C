@@ -379,10 +379,10 @@ Foam::scalar Foam::rbd::stepControl::choose
         // to s^2/(2 (R - r)) more. At most half the touching gap: s <=
         // sqrt((R - r) touch), covered from the centre's horizontal speed
         // under an acceleration up to g (the wall is straight in z). Its
-        // neighbours push a sphere along the wall at up to about g: in 6.6
-        // ms steps spheres went 0.15-0.25 mm sideways and 2.4 um into
-        // the wall; with this bound 1.4 um at most, in the same CPU time
-        // (500 placed spheres; docs/stepLength.md)
+        // neighbours push a sphere along the wall at up to about g: in
+        // 3-7 ms steps spheres went 0.13-0.25 mm sideways and up to 2.4
+        // um into the wall; with this bound 1.4 um at most, in the same
+        // CPU time (500 placed spheres; docs/stepLength.md)
         if (centreGaps && c.k == tubeWall && !fixed[c.i])
         {
             const vector& v = bodies[c.i].v();
