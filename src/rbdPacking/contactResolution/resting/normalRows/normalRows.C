@@ -33,8 +33,11 @@ Foam::scalar Foam::rbd::normalRows::normalB
         // concave tube wall would let the wall force do positive
         // work; without it the work of every contact force over a
         // step is -phi max(d, 0) <= 0 (see the header). Its
-        // geometric error, h^2 |v_t|^2/(2 rho) per step, is left to
-        // the overlap correction.
+        // geometric error, h^2 |v_t|^2/(2 rho) per step, closes the
+        // gap only on the concave wall (rho = R - a), where the step
+        // holds it to half the touching gap for accelerations along
+        // the wall up to g (stepControl); the overlap correction takes
+        // what is left.
         vector aC(bodies[c.i].invMass()*Fb[c.i]);
         if (c.k >= 0 && !fixed[c.k])
         {
