@@ -288,6 +288,10 @@ Foam::scalar Foam::rbd::stepControl::choose
 
     // ... and the container, the same way
     const scalar R = tubeRadius_;
+
+    // The path along the wall that its curvature turns into half the
+    // touching gap (a sphere on the wall, below)
+    const scalar wallPath = std::sqrt(max(R - rb_, 0.0)*touch_);
     for (const label i : awake)
     {
         if (fixed[i])
@@ -388,11 +392,7 @@ Foam::scalar Foam::rbd::stepControl::choose
             const vector& v = bodies[c.i].v();
             bound
             (
-                timeToCover
-                (
-                    g, mag(vector(v.x(), v.y(), 0)),
-                    std::sqrt(max(R - rb_, 0.0)*touch_)
-                ),
+                timeToCover(g, mag(vector(v.x(), v.y(), 0)), wallPath),
                 c.i, c.k
             );
         }

@@ -30,6 +30,24 @@ namespace
         return b;
     }
 
+    //- The contacts of sphere 0 at b with the wall of the tube of
+    //  tubeRadius (not the floor)
+    List<contact> wallContacts(const rigidBody& b)
+    {
+        const tube container(2*tubeRadius, 1, 0.5, 0.5);
+        DynamicList<contact> found;
+        sphereContacts::sphereTube(0, b, r, container, band, found);
+        List<contact> wall;
+        for (const contact& c : found)
+        {
+            if (c.k == tubeWall)
+            {
+                wall.append(c);
+            }
+        }
+        return wall;
+    }
+
     stepControl control(const bool centreGaps, const bool exactSolids = false)
     {
         return stepControl
@@ -291,17 +309,7 @@ TEST(stepControl, aSlowApproachOfTheWallStopsShortOfTouching)
     const boolList fixed(1, false);
     const labelList awake({0});
     const List<labelPair> pairs;
-    const tube container(2*R, 1, 0.5, 0.5);
-    DynamicList<contact> found;
-    sphereContacts::sphereTube(0, bs[0], r, container, band, found);
-    List<contact> contacts;
-    for (const contact& c : found)
-    {
-        if (c.k == tubeWall)
-        {
-            contacts.append(c);
-        }
-    }
+    const List<contact> contacts(wallContacts(bs[0]));
     ASSERT_EQ(contacts.size(), 1);
 
     const scalar h = control(true).choose
@@ -325,17 +333,7 @@ TEST(stepControl, eq38BoundsASphereWithinTheBandOfTheWall)
     const boolList fixed(1, false);
     const labelList awake({0});
     const List<labelPair> pairs;
-    const tube container(2*R, 1, 0.5, 0.5);
-    DynamicList<contact> found;
-    sphereContacts::sphereTube(0, bs[0], r, container, band, found);
-    List<contact> contacts;
-    for (const contact& c : found)
-    {
-        if (c.k == tubeWall)
-        {
-            contacts.append(c);
-        }
-    }
+    const List<contact> contacts(wallContacts(bs[0]));
     ASSERT_EQ(contacts.size(), 1);
 
     const scalar h = control(true).choose
@@ -360,17 +358,7 @@ TEST(stepControl, aSphereOnTheWallMovesLessThanItsCurvatureAllows)
     const boolList fixed(1, false);
     const labelList awake({0});
     const List<labelPair> pairs;
-    const tube container(2*R, 1, 0.5, 0.5);
-    DynamicList<contact> found;
-    sphereContacts::sphereTube(0, bs[0], r, container, band, found);
-    List<contact> contacts;
-    for (const contact& c : found)
-    {
-        if (c.k == tubeWall)
-        {
-            contacts.append(c);
-        }
-    }
+    const List<contact> contacts(wallContacts(bs[0]));
     ASSERT_EQ(contacts.size(), 1);
 
     const scalar h = control(true).choose
