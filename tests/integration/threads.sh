@@ -1,8 +1,8 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # simulation/threads: the narrow phase of mesh pellets on 1, 2 and 3 threads
-# gives the same packing. The ring bed of shapes.sh (8 Raschig rings, the
-# triangle-mesh narrow phase) is packed with threads 1, 2 and 3 (3 on a
+# gives the same packing. The ring bed of shapes.sh on meshes (ringMesh:
+# 8 Raschig rings, the triangle-mesh narrow phase) is packed with threads 1, 2 and 3 (3 on a
 # 2-core machine too: more threads than cores changes nothing but the
 # time). Checks:
 #   - each run exits 0, settles and echoes its thread count in the log
@@ -20,7 +20,7 @@ set -u
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/lib/checks.sh"
 
-source="$here/cases/shapes/ring"
+source="$here/cases/shapes/ringMesh"
 for t in 1 2 3
 do
     d="$tmp/t$t"

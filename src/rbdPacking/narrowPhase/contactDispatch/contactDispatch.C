@@ -4,7 +4,6 @@
 
 #include "contactDispatch.H"
 #include "sphereContacts.H"
-#include "cylinderContacts.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -117,18 +116,7 @@ void Foam::rbd::contactDispatch::meshContainer
     DynamicList<contact>& contacts
 ) const
 {
-    if (hullRadius_ > 0)
-    {
-        cylinderContacts::cylinderTube
-        (
-            i, bi, hullRadius_, hullHalfHeight_, tube_, band_, contacts,
-            hullRimAngles_
-        );
-    }
-    else
-    {
-        meshes_[0].meshTube(i, bi, tube_, contacts);
-    }
+    meshes_[0].meshTube(i, bi, tube_, contacts);
 }
 
 
@@ -164,10 +152,7 @@ Foam::rbd::contactDispatch::contactDispatch
     band_(band),
     meshes_(),
     prism_(),
-    prisms_(),
-    hullRadius_(0),
-    hullHalfHeight_(0),
-    hullRimAngles_()
+    prisms_()
 {
     const word model(pairModel(shape_, contactModel));
     const label nThreads = max(threads, label(1));
@@ -188,24 +173,6 @@ Foam::rbd::contactDispatch::contactDispatch
         forAll(meshes_, t)
         {
             meshes_.set(t, new meshContacts(shape_.mesh(), band_));
-        }
-
-        // auto: the container by the hull where the shape has one (its
-        // rims as the mesh's polygons); contactModel mesh: by the mesh
-        scalar radius = 0;
-        scalar halfHeight = 0;
-        if
-        (
-            contactModel != "mesh"
-         && shape_.cylindricalHull(radius, halfHeight)
-        )
-        {
-            hullRadius_ = radius;
-            hullHalfHeight_ = halfHeight;
-            hullRimAngles_ = cylinderContacts::rimAngles
-            (
-                shape_.mesh().points(), hullRadius_
-            );
         }
     }
 }
@@ -242,14 +209,13 @@ Foam::word Foam::rbd::contactDispatch::pairModel
         return "prism";
     }
 
-    // auto: the exact solid where its contacts are complete. A concave
-    // arc (a ring's bore, a hole) lacks the curvature term of a wall
-    // inside it (prismContacts::roundRadius): an 8-ring bed reached
-    // 0.55 % of d, above the stability suite's 0.5 %, so they pack on
-    // meshes. (Their pairs unreduced, rings stayed within 0.5 % on 34
-    // beds, cylinders with holes reached 0.53 %: docs/exactContacts.md;
-    // rings wait for their validation)
-    if (hasPrism && !prism->hasConcaveArc())
+    // auto: the exact solid, but for a cylinder with holes off its axis.
+    // Its pairs unreduced (prismContacts), the rings stayed within 0.5 %
+    // of d on 34 beds and the soak's hooked rings, and packed 8 to 32
+    // times faster than on their meshes; one bed of 8 cylinders with
+    // four 2 mm holes reached 0.53 %, so those keep their meshes
+    // (docs/exactContacts.md, "Thirty-fifth session")
+    if (hasPrism && !prism->hasOffAxisHole())
     {
         return "prism";
     }
@@ -336,18 +302,7 @@ void Foam::rbd::contactDispatch::describe(Ostream& os) const
     {
         os  << "triangle meshes (" << shape_.mesh().nFaces()
             << " faces, " << meshes_[0].bvh().nodes().size()
-            << " tree nodes) between pellets, ";
-        if (hullRadius_ > 0)
-        {
-            os  << "exact " << shape_.type() << " contacts (rims: polygons"
-                << " of " << hullRimAngles_.size() << " vertices, as the"
-                << " mesh)";
-        }
-        else
-        {
-            os  << "mesh contacts";
-        }
-        os  << " with the container";
+            << " tree nodes) between pellets and with the container";
     }
     else
     {

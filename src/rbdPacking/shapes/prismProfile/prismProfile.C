@@ -283,6 +283,22 @@ bool Foam::rbd::prismProfile::hasConcaveArc() const
 }
 
 
+bool Foam::rbd::prismProfile::hasOffAxisHole() const
+{
+    // Off the axis by more than a millionth of the profile's size: the
+    // shapes place their holes on a circle of a radius that is either
+    // zero or a fraction of the diameter
+    forAll(holeCentres_, j)
+    {
+        if (mag(holeCentres_[j]) > 1e-6*outerRadius_)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 bool Foam::rbd::prismProfile::inside2D(const vector2D& p) const
 {
     bool in = false;

@@ -804,8 +804,9 @@ TEST(prismProfile, exposedArcsOfTheShapes)
 TEST(prismProfile, concaveArcsAreTheBoresAndHoles)
 {
     // A ring's bore and the holes are concave arcs; the lobes meet at
-    // corners (cusps), not on concave arcs. contactModel auto packs the
-    // profiles without concave arcs as exact solids (contactDispatch)
+    // corners (cusps), not on concave arcs. contactModel auto packs every
+    // profile but those with holes off the axis as exact solids
+    // (contactDispatch)
     for (const prismCase& c : cases())
     {
         const autoPtr<prismProfile> p(c.profile());
@@ -819,6 +820,12 @@ TEST(prismProfile, concaveArcsAreTheBoresAndHoles)
             c.name == "ring" || c.name == "cylinderWithHoles"
          || c.name == "twoDiscsAndHoles";
         EXPECT_EQ(p->hasConcaveArc(), bored) << c.name;
+
+        // contactModel auto keeps the meshes for holes off the axis only;
+        // the ring's bore is on it
+        const bool offAxis =
+            c.name == "cylinderWithHoles" || c.name == "twoDiscsAndHoles";
+        EXPECT_EQ(p->hasOffAxisHole(), offAxis) << c.name;
     }
 }
 

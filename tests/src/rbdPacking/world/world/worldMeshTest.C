@@ -238,11 +238,15 @@ TEST(worldMesh, ringIntoTheHoleOfAnotherSettlesWithoutJitter)
 {
     // Washers (10/6/2 mm): the upper one stands on edge over the hole of
     // the lower one and sinks into it (nonconvex contact with the inner
-    // rim), then tips over and settles
+    // rim), then tips over and settles; on the triangle meshes and on the
+    // exact solids (contactModel auto's for rings)
+    for (const std::string model : {"mesh", "exact"})
+    {
+    SCOPED_TRACE("contactModel " + model);
     shapeScene s
     (
         0.04, "shape ring; diameter 0.01; innerDiameter 0.006; "
-        "height 0.002; faces 300;"
+        "height 0.002; faces 300;", "contactModel " + model + ";"
     );
     s().addBody(point(0, 0, 0.001), quaternion(1));
     s().addBody(point(0, 0, 0.0075), quaternion(vector(0, 1, 0), 0.5*M_PI));
@@ -274,6 +278,7 @@ TEST(worldMesh, ringIntoTheHoleOfAnotherSettlesWithoutJitter)
     // below its cap was no longer taken for a 0.7 mm deep contact)
     EXPECT_LE(s().stats().maxOverlap, 0.005*s.shape->diameter());
     EXPECT_LT(s.outside(), 1e-6);
+    }
 }
 
 
@@ -283,13 +288,16 @@ TEST(worldMesh, washersDroppedOnEachOtherOverlapWithinTarget)
     // A rim vertex on the other washer's flat face also projects onto its
     // wall faces, at the wall's edge, and was reported as deep as it is
     // inside the wall's plane (1.1-4.4 % dp with these seeds) and pushed
-    // sideways; the largest overlap of the run is now within 0.5 % dp
+    // sideways; the largest overlap of the run is now within 0.5 % dp.
+    // On the triangle meshes and on the exact solids
+    for (const std::string model : {"mesh", "exact"})
     for (const unsigned seed : {6u, 7u, 8u})
     {
+        SCOPED_TRACE("contactModel " + model);
         shapeScene s
         (
             0.03, "shape ring; diameter 0.01; innerDiameter 0.006; "
-            "height 0.002; faces 300;"
+            "height 0.002; faces 300;", "contactModel " + model + ";"
         );
         std::mt19937 rng(seed);
         std::uniform_real_distribution<double> U(-1, 1);

@@ -50,9 +50,14 @@ namespace
     const std::string sleepOn = "sleepVelocity 0.001;";
 
     //- The same on triangle meshes everywhere: contactModel auto packs
-    //  cylinders as exact solids, and the cylinder scenes of this suite
-    //  are about meshes (rings stay on meshes under auto)
+    //  cylinders and rings as exact solids, and the scenes of this suite
+    //  are about meshes
     const std::string sleepOnMeshes = sleepOn + " contactModel mesh;";
+
+    //- The ring scenes run on both: the meshes this suite is about, and
+    //  the exact solids auto packs rings with
+    const std::string ringModels[] =
+        {sleepOnMeshes, sleepOn + " contactModel exact;"};
 
     //- Fall height for an impact at about 1 m/s [m]
     const scalar fall1 = 0.051;
@@ -422,14 +427,18 @@ TEST(stabilityMesh, ringsStackedInATube)
     // for them to turn over (13 mm): the second exactly coaxial (vertex
     // onto vertex, edges onto parallel edges), the third turned by 7
     // degrees about the axis and tilted by 2 (rims crossing)
-    meshScene s(0.013, ringDict);
-    s.addAt(0, 0, 0, quaternion(1));
-    s.addAt(0, 0, 0.01 + 0.025, quaternion(1));
-    s.addAt(0.0003, 0, 0.02 + 0.06,
-        about(vector(0, 0, 1), 7)*about(vector(1, 0, 0), 2));
-    monitor m{s};
-    m.settleAndHold("rings stacked", 3);
-    m.expectHealthy("rings stacked");
+    for (const std::string& simulation : ringModels)
+    {
+        const std::string what = "rings stacked, " + simulation;
+        meshScene s(0.013, ringDict, simulation);
+        s.addAt(0, 0, 0, quaternion(1));
+        s.addAt(0, 0, 0.01 + 0.025, quaternion(1));
+        s.addAt(0.0003, 0, 0.02 + 0.06,
+            about(vector(0, 0, 1), 7)*about(vector(1, 0, 0), 2));
+        monitor m{s};
+        m.settleAndHold(what, 3);
+        m.expectHealthy(what);
+    }
 }
 
 
@@ -444,11 +453,12 @@ TEST(stabilityMesh, ringHookedOntoARingOnTheFloor)
     // (tilt [deg], offset of the lowest point from the axis [m])
     const std::pair<scalar, scalar> starts[] =
         {{45, -0.001}, {45, 0.001}, {60, 0.001}};
+    for (const std::string& simulation : ringModels)
     for (const auto& start : starts)
     {
         const scalar tilt = start.first;
         const scalar y = start.second;
-        meshScene s(0.018, ringDict);
+        meshScene s(0.018, ringDict, simulation);
         s.addAt(0, 0, 0, quaternion(1));
         s.addLowestAt(point(0, y, 0.0095), about(vector(1, 0, 0), tilt));
         monitor m{s};
@@ -458,7 +468,7 @@ TEST(stabilityMesh, ringHookedOntoARingOnTheFloor)
 
         const std::string what =
             "ring hooked, tilt " + std::to_string(tilt)
-          + ", y " + std::to_string(y);
+          + ", y " + std::to_string(y) + ", " + simulation;
         m.settleAndHold(what, 4);
         m.expectHealthy(what);
 
@@ -717,8 +727,12 @@ TEST(stabilityMesh, fastPelletsThrownOntoAPileStopAtTheirFirstTouch)
             const std::string what =
                 pellets.substr(6, pellets.find(';') - 6) + ", sweepSpeed "
               + sweepSpeed + ", seed " + std::to_string(seed);
-            meshScene s(0.04, pellets, sleepOn + " sweepSpeed " + sweepSpeed
-                + ";");
+            meshScene s
+            (
+                0.04, pellets,
+                (pellets == ringDict ? sleepOnMeshes : sleepOn)
+              + " sweepSpeed " + sweepSpeed + ";"
+            );
             std::mt19937 rng(seed);
             std::uniform_real_distribution<double> U(-1, 1);
             for (const scalar x : {-0.006, 0.006})
