@@ -7,7 +7,6 @@
 #include "containerContact.H"
 #include "mathematicalConstants.H"
 
-#include <algorithm>
 #include <vector>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -41,8 +40,8 @@ namespace
     using namespace Foam::rbd;
 
     //- The contacts of the two rims of one cylinder (radius a) with the
-    //  tube's bottom and wall: the candidates of each rim (circle points or
-    //  polygon vertices), appended; e and mu are left to the caller
+    //  tube's bottom and wall: the candidate points of each rim circle,
+    //  appended; e and mu are left to the caller
     class rimsInTube
     {
         const label i_;
@@ -51,11 +50,9 @@ namespace
         const tube& container_;
         const scalar band_;
         DynamicList<contact>& contacts_;
-        const UList<scalar>& rimAngles_;
 
-        //- The axis (world) and the vertices per rim (< 3: circles)
+        //- The axis (world)
         const vector ax_;
-        const label nRim_;
 
     public:
 
@@ -66,8 +63,7 @@ namespace
             const scalar a,
             const tube& container,
             const scalar band,
-            DynamicList<contact>& contacts,
-            const UList<scalar>& rimAngles
+            DynamicList<contact>& contacts
         )
         :
             i_(i),
@@ -76,9 +72,7 @@ namespace
             container_(container),
             band_(band),
             contacts_(contacts),
-            rimAngles_(rimAngles),
-            ax_(bi.R() & vector(0, 0, 1)),
-            nRim_(rimAngles.size())
+            ax_(bi.R() & vector(0, 0, 1))
         {}
 
         //- Append the contact of rim point p with part (tubeBottom or
@@ -86,52 +80,19 @@ namespace
         void add(const point& p, const containerPart part) const
         {
             contact c(containerPointContact(i_, bi_.x(), p, part, container_));
-            if (nRim_ < 3)
-            {
-                // A circular rim: the point slides along it as the
-                // cylinder turns about its axis (contact.H); d its radial
-                // direction
-                const vector w(c.ri - ax_*(ax_ & c.ri));
-                c.axisI = ax_;
-                c.rhoI = -(c.n & w);
-            }
+            // The point slides along the rim as the cylinder turns about
+            // its axis (contact.H); w its radial direction
+            const vector w(c.ri - ax_*(ax_ & c.ri));
+            c.axisI = ax_;
+            c.rhoI = -(c.n & w);
             contacts_.append(c);
         }
 
-        //- The rim points to try for the direction d (unit, normal to the
-        //  axis) from the rim centre c: the circle's point, or the
-        //  vertices of the polygon edge its angle falls on; returns how
-        //  many (1 or 2)
-        label rimPoints(const point& c, const vector& d, point q[2]) const
+        //- The rim point in the direction d (unit, normal to the axis)
+        //  from the rim centre c
+        point rimPoint(const point& c, const vector& d) const
         {
-            if (nRim_ < 3)
-            {
-                q[0] = c + a_*d;
-                return 1;
-            }
-            const tensor& R = bi_.R();
-            const vector db(R.T() & d);
-            const scalar phi = Foam::atan2(db.y(), db.x());
-            const label j = label
-            (
-                std::upper_bound(rimAngles_.begin(), rimAngles_.end(), phi)
-              - rimAngles_.begin()
-            );
-            const scalar theta[2] =
-            {
-                rimAngles_[(j + nRim_ - 1) % nRim_], rimAngles_[j % nRim_]
-            };
-            for (label k = 0; k < 2; ++k)
-            {
-                q[k] =
-                    c
-                  + a_
-                   *(
-                        R
-                      & vector(Foam::cos(theta[k]), Foam::sin(theta[k]), 0)
-                    );
-            }
-            return 2;
+            return c + a_*d;
         }
 
         //- The bottom contacts of the rim centred at c: its lowest point
@@ -142,33 +103,25 @@ namespace
             const vector w(normalTo(vector(0, 0, -1), ax_));
             const vector u(ax_ ^ w);
             const label start = contacts_.size();
-            point q[2];
             for (const vector& d : {w, u, -w, -u})
             {
-                const label nq = rimPoints(c, d, q);
-                for (label k = 0; k < nq; ++k)
+                const point q(rimPoint(c, d));
+                if (q.z() < band_)
                 {
-                    if (q[k].z() < band_)
-                    {
-                        add(q[k], tubeBottom);
-                    }
+                    add(q, tubeBottom);
                 }
             }
 
             // The rim's points that one step can bring down, beside the
-            // four candidates (floorSupport): the polygon's vertices, or
-            // points of the circle every 360/nCircleSamples degrees
-            // (material points: they turn with the body)
+            // four candidates (floorSupport): points of the circle every
+            // 360/nCircleSamples degrees (material points: they turn with
+            // the body)
             const tensor& R = bi_.R();
             const label kept = contacts_.size();
-            const label nSample =
-                nRim_ >= 3 ? nRim_ : cylinderContacts::nCircleSamples;
+            const label nSample = cylinderContacts::nCircleSamples;
             for (label k = 0; k < nSample; ++k)
             {
-                const scalar t =
-                    nRim_ >= 3
-                  ? rimAngles_[k]
-                  : constant::mathematical::twoPi*k/nSample;
+                const scalar t = constant::mathematical::twoPi*k/nSample;
                 const point p
                 (
                     c + a_*(R & vector(Foam::cos(t), Foam::sin(t), 0))
@@ -214,26 +167,19 @@ namespace
             return w;
         }
 
-        //- The largest rho of the rim points tried for direction d
+        //- rho of the rim point in direction d
         scalar rimRho(const point& c, const vector& d) const
         {
-            point q[2];
-            const label nq = rimPoints(c, d, q);
-            scalar rho = 0;
-            for (label k = 0; k < nq; ++k)
-            {
-                rho = max(rho, tube::axialDistance(q[k]));
-            }
-            return rho;
+            return tube::axialDistance(rimPoint(c, d));
         }
 
         //- The direction of the rim point of largest rho. rho can have two
         //  maxima over a tilted rim near the axis (a disc leaning across a
         //  narrow tube): the one found from e_r of the centre may be the
         //  lower (a disc went 7 % of its diameter through the wall). The
-        //  global one: every vertex of a polygonal rim, or the fixed
-        //  points from four starts on a circle; taken only where it is
-        //  higher, so that every other contact stays as it was
+        //  global one: the fixed points from four starts on the circle;
+        //  taken only where it is higher, so that every other contact
+        //  stays as it was
         vector outermost(const point& c) const
         {
             const vector er
@@ -247,31 +193,14 @@ namespace
             const scalar rhoFound = rimRho(c, w);
             vector wBest(w);
             scalar rhoBest = rhoFound;
-            if (nRim_ >= 3)
+            for (const vector& d0 : {-w0, ax_ ^ w0, w0 ^ ax_})
             {
-                const tensor& R = bi_.R();
-                for (const scalar t : rimAngles_)
+                const vector d(outward(c, d0));
+                const scalar rho = rimRho(c, d);
+                if (rho > rhoBest)
                 {
-                    const vector d(R & vector(Foam::cos(t), Foam::sin(t), 0));
-                    const scalar rho = tube::axialDistance(c + a_*d);
-                    if (rho > rhoBest)
-                    {
-                        rhoBest = rho;
-                        wBest = d;
-                    }
-                }
-            }
-            else
-            {
-                for (const vector& d0 : {-w0, ax_ ^ w0, w0 ^ ax_})
-                {
-                    const vector d(outward(c, d0));
-                    const scalar rho = rimRho(c, d);
-                    if (rho > rhoBest)
-                    {
-                        rhoBest = rho;
-                        wBest = d;
-                    }
+                    rhoBest = rho;
+                    wBest = d;
                 }
             }
             return
@@ -285,17 +214,13 @@ namespace
             const scalar Rt = container_.radius();
             const vector w(outermost(c));
             const vector u(ax_ ^ w);
-            point q[2];
             for (const vector& d : {w, u, -w, -u})
             {
-                const label nq = rimPoints(c, d, q);
-                for (label k = 0; k < nq; ++k)
+                const point q(rimPoint(c, d));
+                const scalar rho = tube::axialDistance(q);
+                if (rho > VSMALL && Rt - rho < band_)
                 {
-                    const scalar rho = tube::axialDistance(q[k]);
-                    if (rho > VSMALL && Rt - rho < band_)
-                    {
-                        add(q[k], tubeWall);
-                    }
+                    add(q, tubeWall);
                 }
             }
         }
@@ -313,8 +238,7 @@ void Foam::rbd::cylinderContacts::cylinderTube
     const scalar b,
     const tube& container,
     const scalar band,
-    DynamicList<contact>& contacts,
-    const UList<scalar>& rimAngles
+    DynamicList<contact>& contacts
 )
 {
     const point& x = bi.x();
@@ -327,7 +251,7 @@ void Foam::rbd::cylinderContacts::cylinderTube
         return;
     }
 
-    const rimsInTube rims(i, bi, a, container, band, contacts, rimAngles);
+    const rimsInTube rims(i, bi, a, container, band, contacts);
     const vector ax(bi.R() & vector(0, 0, 1));
     for (const scalar side : {-1.0, 1.0})
     {
@@ -341,33 +265,6 @@ void Foam::rbd::cylinderContacts::cylinderTube
             rims.wall(c);
         }
     }
-}
-
-
-Foam::List<Foam::scalar> Foam::rbd::cylinderContacts::rimAngles
-(
-    const pointField& points,
-    const scalar a
-)
-{
-    std::vector<scalar> angles;
-    for (const point& p : points)
-    {
-        if (mag(Foam::sqrt(sqr(p.x()) + sqr(p.y())) - a) <= 1e-9*a)
-        {
-            angles.push_back(Foam::atan2(p.y(), p.x()));
-        }
-    }
-    std::sort(angles.begin(), angles.end());
-    List<scalar> unique;
-    for (const scalar t : angles)
-    {
-        if (unique.empty() || t - unique.last() > 1e-9)
-        {
-            unique.append(t);
-        }
-    }
-    return unique;
 }
 
 

@@ -204,104 +204,16 @@ TEST(cylinderContacts, meshAndExactContactsAgreeOnTheFloor)
 }
 
 
-TEST(cylinderContacts, polygonalRimsGiveTheMeshsDeepestVertices)
-{
-    // With the rim vertices of the mesh, the contacts are exact for the
-    // mesh: on the floor and against the wall, at every orientation tried,
-    // the deepest contact is the mesh's deepest vertex; a cylinder lying
-    // on a side face touches at the four corners of that face, and one
-    // turned by half a segment (on an edge of its polygon) at two points
-    const triMesh m(pelletMeshes::cylinder(d, h, 300));
-    const List<scalar> angles(cylinderContacts::rimAngles(m.points(), a));
-    ASSERT_GE(angles.size(), 16);
-    for (label k = 1; k < angles.size(); ++k)
-    {
-        EXPECT_GT(angles[k], angles[k - 1]);
-    }
-    const scalar Rt = 0.02;
-    const tube container(2*Rt, 1, 0.6, 0.6);
-
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> U(-1, 1);
-    for (label trial = 0; trial < 20; ++trial)
-    {
-        const vector axis(U(rng), U(rng), U(rng));
-        const quaternion q(axis/mag(axis), M_PI*U(rng));
-        const tmp<pointField> tp = m.transformedPoints(tensor(q.R()), Zero);
-        const scalar zLow = min(tp().component(vector::Z));
-        scalar rhoHigh = 0;
-        const point x(Rt - 0.5*d - 1e-4, 0, -zLow + 1e-5);
-        for (const point& p : tp())
-        {
-            rhoHigh = max(rhoHigh, tube::axialDistance(p + x));
-        }
-
-        const rigidBody bd(body(x, q));
-        DynamicList<contact> cs;
-        cylinderContacts::cylinderTube
-        (
-            0, bd, a, b, container, band, cs, angles
-        );
-        scalar floorGap = GREAT, wallGap = GREAT;
-        for (const contact& c : cs)
-        {
-            if (c.k == tubeBottom)
-            {
-                floorGap = min(floorGap, c.gap);
-            }
-            else
-            {
-                wallGap = min(wallGap, c.gap);
-            }
-        }
-        EXPECT_NEAR(floorGap, 1e-5, 1e-12) << "trial " << trial;
-        EXPECT_NEAR(wallGap, Rt - rhoHigh, 1e-12) << "trial " << trial;
-    }
-
-    // Lying on a side face (the face between the first two rim vertices
-    // facing down), then turned by half a segment about the axis
-    const scalar theta = 0.5*(angles[0] + angles[1]);
-    const scalar apothem = a*Foam::cos(0.5*(angles[1] - angles[0]));
-    for (const scalar turn : {0.0, 0.5*(angles[1] - angles[0])})
-    {
-        // Body z along the world x axis, the face's normal direction
-        // (theta + turn in the body frame) down
-        const quaternion lie(vector(0, 1, 0), 0.5*M_PI);
-        const vector down
-        (
-            lie.R()
-          & vector(Foam::cos(theta + turn), Foam::sin(theta + turn), 0)
-        );
-        const scalar spin = Foam::atan2(down.y(), -down.z());
-        const quaternion q(quaternion(vector(1, 0, 0), spin)*lie);
-        const scalar z = turn == 0 ? apothem : a;
-        const rigidBody bd(body(point(0, 0, z + 1e-9), q));
-        DynamicList<contact> cs;
-        cylinderContacts::cylinderTube
-        (
-            0, bd, a, b, container, 1e-6, cs, angles
-        );
-        EXPECT_EQ(cs.size(), turn == 0 ? 4 : 2) << "turn " << turn;
-        for (const contact& c : cs)
-        {
-            EXPECT_NEAR(c.gap, 1e-9, 1e-12) << "turn " << turn;
-        }
-    }
-}
-
-
 TEST(cylinderContacts, tiltedDiscNearTheAxisFindsTheOutermostRimPoint)
 {
     // A disc (d 10 mm, h 2 mm) leaning across a tube of 15 mm: rho has two
     // maxima over each rim, and the one in the direction of the centre may
     // be the lower (a disc went 7 % of d through the wall). Random poses
-    // near the axis; the contacts' smallest wall gap is the rim's (circle:
-    // brute force over 20000 angles; polygon: the mesh's outermost vertex)
+    // near the axis; the contacts' smallest wall gap is the rim's (brute
+    // force over 20000 angles of the circles)
     const scalar bDisc = 0.001;
     const scalar Rt = 0.0075;
     const tube container(2*Rt, 1, 0.6, 0.6);
-    const triMesh m(pelletMeshes::cylinder(d, 2*bDisc, 300));
-    const List<scalar> angles(cylinderContacts::rimAngles(m.points(), a));
 
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> U(-1, 1);
@@ -329,22 +241,12 @@ TEST(cylinderContacts, tiltedDiscNearTheAxisFindsTheOutermostRimPoint)
                 circleGap = min(circleGap, Rt - tube::axialDistance(p));
             }
         }
-        scalar meshGap = GREAT;
-        const tmp<pointField> tp = m.transformedPoints(tensor(q.R()), x);
-        for (const point& p : tp())
-        {
-            meshGap = min(meshGap, Rt - tube::axialDistance(p));
-        }
 
         const scalar wide = 0.01;   // every rim point is within the band
-        DynamicList<contact> circle, polygon;
+        DynamicList<contact> circle;
         cylinderContacts::cylinderTube
         (
             0, bd, a, bDisc, container, wide, circle
-        );
-        cylinderContacts::cylinderTube
-        (
-            0, bd, a, bDisc, container, wide, polygon, angles
         );
         auto wallGap = [](const UList<contact>& cs)
         {
@@ -359,7 +261,6 @@ TEST(cylinderContacts, tiltedDiscNearTheAxisFindsTheOutermostRimPoint)
             return g;
         };
         EXPECT_NEAR(wallGap(circle), circleGap, 1e-9) << "trial " << trial;
-        EXPECT_NEAR(wallGap(polygon), meshGap, 1e-12) << "trial " << trial;
         found += wallGap(circle) < GREAT;
     }
     EXPECT_EQ(found, 200);

@@ -14,11 +14,11 @@
 #include "prismContacts.H"
 #include "contactReduction.H"
 #include "meshContacts.H"
-#include "cylinderContacts.H"
 #include "pelletShape.H"
 #include "IStringStream.H"
 #include "mathematicalConstants.H"
 
+#include <algorithm>
 #include <chrono>
 #include <random>
 #include <sstream>
@@ -1533,6 +1533,28 @@ TEST(prismContacts, trilobeOnTheFloorAndAtTheWall)
 
 namespace
 {
+    //- The distinct angles about the z axis of the points at distance r
+    //  from it (to 1e-9 r): the vertices of a rim polygon of radius r of a
+    //  prism mesh
+    label rimVertices(const pointField& points, const scalar r)
+    {
+        std::vector<scalar> angles;
+        for (const point& p : points)
+        {
+            if (mag(Foam::sqrt(sqr(p.x()) + sqr(p.y())) - r) <= 1e-9*r)
+            {
+                angles.push_back(Foam::atan2(p.y(), p.x()));
+            }
+        }
+        std::sort(angles.begin(), angles.end());
+        label n = 0;
+        for (size_t k = 0; k < angles.size(); ++k)
+        {
+            n += k == 0 || angles[k] - angles[k - 1] > 1e-9;
+        }
+        return n;
+    }
+
     //- Sagitta of the mesh's polygons: r (1 - cos(pi/n)) for every circle
     //  of the profile, n the mesh's vertices on it (at either end), the
     //  largest [m]
@@ -1542,7 +1564,7 @@ namespace
         scalar sag = 0;
         for (const prismProfile::arc& a : P.profile->arcs())
         {
-            const label n = cylinderContacts::rimAngles(pts, a.r).size();
+            const label n = rimVertices(pts, a.r);
             EXPECT_GE(n, 16);
             sag = max(sag, a.r*(1 - Foam::cos(pi/n)));
         }
