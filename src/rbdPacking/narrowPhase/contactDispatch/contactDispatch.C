@@ -211,7 +211,7 @@ Foam::word Foam::rbd::contactDispatch::pairModel
 
     // auto: the exact solid, but for a cylinder with holes off its axis.
     // Its pairs unreduced (prismContacts), the rings stayed within 0.5 %
-    // of d on 34 beds and the soak's hooked rings, and packed 8 to 32
+    // of d on 34 beds and the soak's hooked rings, and packed 8 to 120
     // times faster than on their meshes; one bed of 8 cylinders with
     // four 2 mm holes reached 0.53 %, so those keep their meshes
     // (docs/exactContacts.md, "Thirty-fifth session")
