@@ -242,42 +242,45 @@ TEST(worldMesh, ringIntoTheHoleOfAnotherSettlesWithoutJitter)
     // exact solids (contactModel auto's for rings)
     for (const std::string model : {"mesh", "exact"})
     {
-    SCOPED_TRACE("contactModel " + model);
-    shapeScene s
-    (
-        0.04, "shape ring; diameter 0.01; innerDiameter 0.006; "
-        "height 0.002; faces 300;", "contactModel " + model + ";"
-    );
-    s().addBody(point(0, 0, 0.001), quaternion(1));
-    s().addBody(point(0, 0, 0.0075), quaternion(vector(0, 1, 0), 0.5*M_PI));
+        SCOPED_TRACE("contactModel " + model);
+        shapeScene s
+        (
+            0.04, "shape ring; diameter 0.01; innerDiameter 0.006; "
+            "height 0.002; faces 300;", "contactModel " + model + ";"
+        );
+        s().addBody(point(0, 0, 0.001), quaternion(1));
+        s().addBody
+        (
+            point(0, 0, 0.0075), quaternion(vector(0, 1, 0), 0.5*M_PI)
+        );
 
-    scalar lowest = GREAT;
-    while (s().time() < 2)
-    {
-        s().step(0.025);
-        lowest = min(lowest, s().bodies()[1].x().z());
-    }
+        scalar lowest = GREAT;
+        while (s().time() < 2)
+        {
+            s().step(0.025);
+            lowest = min(lowest, s().bodies()[1].x().z());
+        }
 
-    // It went into the hole: the centre came below 5 mm + 2 mm (resting on
-    // top of the washer would leave it at 7 mm)
-    EXPECT_LT(lowest, 0.0068);
+        // It went into the hole: the centre came below 5 mm + 2 mm
+        // (resting on top of the washer would leave it at 7 mm)
+        EXPECT_LT(lowest, 0.0068);
 
-    // Settled, no jitter: nothing moves over the last half second
-    scalar fastest = 0;
-    const point x0(s().bodies()[1].x());
-    while (s().time() < 2.5)
-    {
-        s().step(0.025);
-        fastest = max(fastest, s.maxSpeed());
-    }
-    EXPECT_LT(fastest, 2e-3);
-    EXPECT_LT(mag(s().bodies()[1].x() - x0), 1e-4);
-    EXPECT_LT(s().currentMaxOverlap(), 5e-5);
-    // Largest overlap of the run within the target, 0.5 % dp (measured
-    // 0.002 % dp; 1.04 % dp before the rim crossing the other's side edge
-    // below its cap was no longer taken for a 0.7 mm deep contact)
-    EXPECT_LE(s().stats().maxOverlap, 0.005*s.shape->diameter());
-    EXPECT_LT(s.outside(), 1e-6);
+        // Settled, no jitter: nothing moves over the last half second
+        scalar fastest = 0;
+        const point x0(s().bodies()[1].x());
+        while (s().time() < 2.5)
+        {
+            s().step(0.025);
+            fastest = max(fastest, s.maxSpeed());
+        }
+        EXPECT_LT(fastest, 2e-3);
+        EXPECT_LT(mag(s().bodies()[1].x() - x0), 1e-4);
+        EXPECT_LT(s().currentMaxOverlap(), 5e-5);
+        // Largest overlap of the run within the target, 0.5 % dp (measured
+        // 0.002 % dp; 1.04 % dp before the rim crossing the other's side edge
+        // below its cap was no longer taken for a 0.7 mm deep contact)
+        EXPECT_LE(s().stats().maxOverlap, 0.005*s.shape->diameter());
+        EXPECT_LT(s.outside(), 1e-6);
     }
 }
 
