@@ -90,8 +90,7 @@ Foam::rbd::collisionResolver::resolve
     UList<rigidBody>& bodies,
     const UList<contact>& contacts,
     const scalar touchGap,
-    const boolList& fixed,
-    boolList& woken
+    const boolList& fixed
 ) const
 {
     result res;
@@ -154,15 +153,11 @@ Foam::rbd::collisionResolver::resolve
             const bool colliding = vn < -epsP_;
             const scalar e = (colliding && withRestitution) ? c.e : 0;
 
-            if (wakes(c, vn, fixed))
-            {
-                // A hard collision with a sleeping body wakes it, at rest:
-                // this impulse is reflected off it as off the wall (the
-                // sleeper takes part from the caller's next pass on). A
-                // softer one only bounces off it: the impulse is not
-                // passed on into the settled bed below
-                woken[c.k] = true;
-            }
+            // A sleeping body takes the impulse as the wall does, however
+            // fast: what a hit passes on through the pellets on the bed
+            // is reflected at its surface, not passed into the settled
+            // bed below (the hits that wake a sleeper are found before
+            // the sweeps, world::step)
 
             res.residual = max(res.residual, -vn);
 

@@ -407,12 +407,17 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
     projectOverlaps();
 
 
-    // Sleeping bodies hit hard (faster than wakeVelocity) wake up first;
-    // a softer hit bounces off them in the collision stage, so that an
-    // impact on the bed is not passed on through the settled pellets
-    // below it (hard bodies pass an impulse down a touching chain within
-    // one sweep: with the threshold eps_p, every pellet arriving woke the
-    // bed down to the floor and nothing stayed asleep while filling)
+    // Sleeping bodies hit hard (faster than wakeVelocity) wake up first,
+    // and the contact list is built again with them awake (their contacts
+    // with the container and other sleepers were missing). Only these hits
+    // wake: in the collision stage a sleeper takes any impulse as the wall
+    // does, so an impact on the bed is not passed on through the settled
+    // pellets below it. Hard bodies pass an impulse down a touching chain
+    // within one sweep: with the threshold eps_p, every pellet arriving
+    // woke the bed down to the floor; with wakes in the sweeps at
+    // wakeVelocity, a layer of pellets landing at once still did (the
+    // layers feed, docs/loadingSpeed.md), and a sleeper woken there was
+    // stepped without its contacts unless the stage was run again
     bool woke = false;
     for (const contact& c : contacts_)
     {
@@ -430,20 +435,11 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
         findContacts();
     }
 
-    // 4. Collisions. A sleeper hit in them faster than wakeVelocity (by an
-    //    impulse passed along the bed) wakes, but the contact list was
-    //    built with it asleep: its contacts with the container and with
-    //    other sleepers are missing.
-    //    The list is built again and the collisions resolved once more
-    //    (rarely more than once): without it, the woken pellet was stepped
-    //    without its floor and fell 0.15 mm into it in one step.
-    const label maxWakePasses = 4;
-    for (label pass = 0; pass < maxWakePasses; ++pass)
+    // 4. Collisions
     {
-        boolList woken(bodies_.size(), false);
         const scalar energyBefore = contacts_.size() ? kineticEnergy() : 0;
         const collisionResolver::result cr =
-            collisions_.resolve(bodies_, contacts_, touch_, fixed_, woken);
+            collisions_.resolve(bodies_, contacts_, touch_, fixed_);
         if (cr.impulses && energyBefore > 0)
         {
             stats_.maxCollisionEnergyGain = max
@@ -455,20 +451,6 @@ Foam::scalar Foam::rbd::world::step(const scalar hMax)
         stats_.collisions += cr.collisions;
         stats_.impulses += cr.impulses;
         stats_.collisionSweeps += cr.sweeps;
-        bool anyWoken = false;
-        forAll(woken, i)
-        {
-            if (woken[i])
-            {
-                wake(i);
-                anyWoken = true;
-            }
-        }
-        if (!anyWoken)
-        {
-            break;
-        }
-        findContacts();
     }
 
     // 5. Step length. A step that collapses would stall the run without a
