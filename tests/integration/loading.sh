@@ -226,6 +226,43 @@ twoColumnsPack|fourColumnsPack)
         "cmp -s $tmp/a/postProcessing/rbdPackBed/pellets.csv $tmp/b/postProcessing/rbdPackBed/pellets.csv"
     echo "loading.$case: wall $(cat $tmp/a.time), cpu $(get $tmp/a cpuTime) s, bulkPorosity $(get $tmp/a bulkPorosity), maxOverlap $ov m"
     ;;
+layersWaitForTheBed)
+    # Scheme layers at spacing 1.1 (7 release points, limitsRelease), 16
+    # cylinders of restitution 0.3 (a layer comes to rest well within the
+    # longest wait, 1 s): with awakeLayers 1 (the default) the second
+    # layer is released only once fewer than 7 pellets are awake, so the
+    # first log line (every 5 ms) with more than 7 released shows the first
+    # layer partly asleep, and the second layer still falling has woken
+    # none of it; with awakeLayers 0 each point releases as soon as its
+    # pellet has fallen clear, before anything sleeps
+    for wait in 1 0
+    do
+        d="$tmp/wait$wait"
+        setup "$d" loading/scheme layers loading/spacing 1.1 \
+            pellets/number 16 pellets/restitution 0.3 \
+            simulation/logInterval 0.005
+        [ $wait = 0 ] && foamDictionary "$d/system/packingDict" \
+            -entry loading/awakeLayers -add 0 > /dev/null
+        pack "$d"
+        status=$?
+        check "awakeLayers $wait: exit status 0, settled with 16 pellets ($(cat $d.time))" \
+            "[ $status -eq 0 ] && [ \"\$(get $d status)\" = settled ] && [ \"\$(get $d pellets)\" = 16 ]"
+        check "awakeLayers $wait: the log echoes it" \
+            "grep -Eq '^ +awakeLayers +$wait;' $d.log"
+        # released and sleeping at the first line with more than 7 released
+        first="$(awk '$1 == "Time" {split($6, r, "/"); for (i = 1; i < NF; i++) if ($i == "sleeping") s = $(i + 1); if (r[1] > 7) {print r[1], s; exit}}' $d.log)"
+        if [ $wait = 1 ]
+        then
+            check "awakeLayers 1: the second layer waits for the first to sleep (released, sleeping at its release: $first)" \
+                "[ -n \"$first\" ] && awk -v f='$first' 'BEGIN {split(f, a, \" \"); exit !(a[2] >= 1 && a[1] - a[2] < 14)}'"
+        else
+            check "awakeLayers 0: the second layer falls before anything sleeps (released, sleeping: $first)" \
+                "[ -n \"$first\" ] && awk -v f='$first' 'BEGIN {split(f, a, \" \"); exit !(a[2] == 0)}'"
+        fi
+        ov="$(get $d maxOverlap)"
+        check "awakeLayers $wait: largest overlap $ov m below 0.5 % of dp" "le ${ov:-1} 5e-5"
+    done
+    ;;
 placementRelease|placementRepack)
     # Eight cylinders placed by a file: four at z = 20 mm on the points
     # (+-12 mm, 0), (0, +-12 mm), three at 40 mm on the diagonals, each

@@ -501,7 +501,7 @@ Foam::scalar Foam::rbd::packedBed::endTimeForLoading
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::rbd::packedBed::releasePellets()
+void Foam::rbd::packedBed::releasePellets(const scalar maxWait)
 {
     if (loading_->placed())
     {
@@ -529,6 +529,28 @@ void Foam::rbd::packedBed::releasePellets()
     const scalar rb = shape_->boundingRadius();
     labelList& lastOfColumn = state_.lastOfColumn;
 
+    // The layers wait for the bed: no release while awakeLimit pellets or
+    // more are awake, unless the wait has lasted maxWait (a bed whose
+    // pellets keep rocking is fed on a timer rather than stalled)
+    const label awakeLimit = loading_->awakeLimit();
+    if
+    (
+        awakeLimit > 0 && controls_.sleepVelocity > 0
+     && bodies.size() - world_->nSleeping() >= awakeLimit
+     && world_->time() - state_.lastRelease < maxWait
+    )
+    {
+        return;
+    }
+
+    // The pellets that can come within the band of a release point: those
+    // whose centre is less than 2 r_b + band below the release height
+    // (the disturbance is horizontal), found once per call
+    const scalar zLow =
+        loading_->releaseHeight() - 2*rb - world_->band();
+    DynamicList<label> high;
+    bool highFound = false;
+
     for
     (
         label c = 0;
@@ -554,10 +576,21 @@ void Foam::rbd::packedBed::releasePellets()
         // of it: every pellet is tested (a bed that reaches the release
         // height brings old pellets up there), by bounding spheres, so a
         // pellet is never released into another
-        scalar gap = GREAT;
-        for (const rigidBody& b : bodies)
+        if (!highFound)
         {
-            gap = min(gap, mag(b.x() - x) - 2*rb);
+            forAll(bodies, j)
+            {
+                if (bodies[j].x().z() > zLow)
+                {
+                    high.append(j);
+                }
+            }
+            highFound = true;
+        }
+        scalar gap = GREAT;
+        for (const label j : high)
+        {
+            gap = min(gap, mag(bodies[j].x() - x) - 2*rb);
         }
         if (gap < world_->band())
         {
@@ -573,6 +606,7 @@ void Foam::rbd::packedBed::releasePellets()
         state_.releaseOverlap = max(state_.releaseOverlap, -gap);
 
         lastOfColumn[c] = world_->addBody(x, q);
+        high.append(lastOfColumn[c]);
         ++state_.released;
     }
 }
@@ -1385,7 +1419,7 @@ void Foam::rbd::packedBed::run()
     while (goOn)
     {
         const label before = st.released;
-        releasePellets();
+        releasePellets(0.5*stallTime);
         if (st.released > before)
         {
             st.lastRelease = w.time();

@@ -25,7 +25,8 @@ const Foam::scalar Foam::rbd::loadingScheme::boundTolerance = 1e-12;
 const Foam::wordList Foam::rbd::loadingScheme::knownEntries
 ({
     "scheme", "spacing", "tilt", "positionDisturbance",
-    "angleDisturbance", "seed", "releaseHeight", "columnOffset", "file"
+    "angleDisturbance", "seed", "releaseHeight", "columnOffset", "file",
+    "awakeLayers"
 });
 
 
@@ -49,6 +50,7 @@ Foam::rbd::loadingScheme::loadingScheme
     seed_(getLabelOrDefault(dict, "seed", 1, 0)),
     releaseHeight_(0),
     columnOffset_(0),
+    awakeLayers_(0),
     columns_(),
     dp_(shape.diameter()),
     rb_(shape.boundingRadius()),
@@ -158,6 +160,13 @@ Foam::rbd::loadingScheme::loadingScheme
         readColumnOffset(dict);
     }
 
+    if (scheme_ != "layers" && dict.found("awakeLayers"))
+    {
+        WarningInFunction
+            << "awakeLayers in " << dict.name() << " is ignored: only "
+            << "scheme layers waits for its bed to sleep" << endl;
+    }
+
     const scalar s = columnOffset_;
     const scalar z = releaseHeight_;
     if (scheme_ == "column")
@@ -173,6 +182,9 @@ Foam::rbd::loadingScheme::loadingScheme
             clearance(), max(R_ - rb_ - positionDisturbance_*dp_, 0.0), z
         );
         checkLayerSpacing(dict);
+
+        // The next layer waits for the bed below to fall asleep
+        awakeLayers_ = getNonNegativeOrDefault(dict, "awakeLayers", 1, "-");
     }
     else if (scheme_ == "twoColumns")
     {
@@ -437,6 +449,10 @@ void Foam::rbd::loadingScheme::write(Ostream& os) const
     os.writeEntry("seed", seed_);
     os.writeEntry("releaseHeight", releaseHeight_);
     os.writeEntry("columnOffset", columnOffset_);
+    if (scheme_ == "layers")
+    {
+        os.writeEntry("awakeLayers", awakeLayers_);
+    }
 }
 
 

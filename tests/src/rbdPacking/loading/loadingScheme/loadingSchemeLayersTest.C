@@ -99,3 +99,53 @@ TEST(loadingSchemeLayers, schemeReleasesFromEveryLatticePoint)
     );
     EXPECT_EQ(single.nColumns(), 1);
 }
+
+
+TEST(loadingSchemeLayers, theNextLayerWaitsForAwakeLayersOfPellets)
+{
+    // The layers wait while awakeLayers layers of nColumns() pellets are
+    // awake: by default one layer (7 pellets at N = 5), rounded up, at
+    // least one pellet; 0 releases without waiting, as do the columns
+    const rbd::tube tube50(0.05, 0.3, 0.5, 0.5);
+    autoPtr<rbd::pelletShape> sphere
+    (
+        rbd::pelletShape::New
+        (
+            parseLayers("shape sphere; diameter 0.01; faces 80;")
+        )
+    );
+    const auto limit = [&](const std::string& text)
+    {
+        return rbd::loadingScheme(parseLayers(text), tube50, sphere())
+            .awakeLimit();
+    };
+    EXPECT_EQ(limit("scheme layers;"), 7);
+    EXPECT_EQ(limit("scheme layers; awakeLayers 2;"), 14);
+    EXPECT_EQ(limit("scheme layers; awakeLayers 0.5;"), 4);
+    EXPECT_EQ(limit("scheme layers; awakeLayers 0.01;"), 1);
+    EXPECT_EQ(limit("scheme layers; awakeLayers 0;"), 0);
+    EXPECT_EQ(limit("scheme column;"), 0);
+    EXPECT_EQ(limit("scheme fourColumns;"), 0);
+}
+
+
+TEST(loadingSchemeLayersDeath, aNegativeAwakeLayersIsRefused)
+{
+    const rbd::tube tube50(0.05, 0.3, 0.5, 0.5);
+    autoPtr<rbd::pelletShape> sphere
+    (
+        rbd::pelletShape::New
+        (
+            parseLayers("shape sphere; diameter 0.01; faces 80;")
+        )
+    );
+    EXPECT_EXIT
+    (
+        rbd::loadingScheme
+        (
+            parseLayers("scheme layers; awakeLayers -1;"), tube50, sphere()
+        ),
+        ::testing::ExitedWithCode(1),
+        "Bad entry 'awakeLayers -1;'"
+    );
+}
