@@ -182,13 +182,13 @@ void Foam::rbd::normalRows::solve
         phi(a) = max(phi(a), scalar(0));
     }
     // A solve that missed its tolerance but whose candidate violates
-    // the LCP by less than lcpSolver::usableViolation is used as it
+    // the LCP by less than lcpSolver::clampViolation is used as it
     // is: a degenerate island's best candidates stop a little above
     // the tolerance
     if
     (
         !lr.converged
-     && !(lr.maxViolation <= lcpSolver::usableViolation)
+     && !(lr.maxViolation <= lcpSolver::clampViolation)
     )
     {
         // No solution (an infeasible island: bodies jammed between
