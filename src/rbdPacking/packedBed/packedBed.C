@@ -573,9 +573,9 @@ void Foam::rbd::packedBed::releasePellets(const scalar maxWait)
         loading_->nextPose(c, x, q);
 
         // Nothing may overlap the release point, nor come within the band
-        // of it: every pellet is tested (a bed that reaches the release
-        // height brings old pellets up there), by bounding spheres, so a
-        // pellet is never released into another
+        // of it: every pellet that can is tested (those of 'high': a bed
+        // that reaches the release height brings old pellets up there),
+        // by bounding spheres, so a pellet is never released into another
         if (!highFound)
         {
             forAll(bodies, j)
